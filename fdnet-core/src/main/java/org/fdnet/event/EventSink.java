@@ -1,0 +1,18 @@
+package org.fdnet.event;
+
+/**
+ * Where a running network's events go: an in-memory list for tests, the logger client in production.
+ * {@link #accept} is called on the runtime's hot path: it must never block a Relation and never throw
+ * for a full or absent consumer (a sink that cannot keep an event counts and reports the loss).
+ */
+public interface EventSink extends AutoCloseable {
+    void accept(NetworkEvent event);
+
+    /** Delivers or persists what is buffered; default: nothing is buffered. */
+    default void flush() {
+    }
+
+    @Override
+    default void close() {
+    }
+}

@@ -1,0 +1,13 @@
+package org.fdnet.netinfo;
+
+/**
+ * An edit that would break the model. The model is left exactly as it was; the message says why in
+ * words a user understands ("module 'Arm' already has a node named 'Shoulder'").
+ */
+public class EditRefusedException extends RuntimeException {
+    private static final long serialVersionUID = 1L;
+
+    public EditRefusedException(String message) {
+        super(message);
+    }
+}

@@ -1,0 +1,52 @@
+package org.fdnet.netinfo;
+
+/**
+ * The rules every network obeys, in one place: the repository applies them to files, NetworkInfo to
+ * edits. Each check throws {@link EditRefusedException} with the message a user sees.
+ */
+public final class ModelRules {
+    private ModelRules() {
+    }
+
+    /** Module and node names: not blank, no '/', no surrounding white space. */
+    public static void checkName(String what, String name) {
+        if (name == null || name.isBlank()) {
+            throw new EditRefusedException(what + " name may not be empty");
+        }
+        if (name.indexOf('/') >= 0) {
+            throw new EditRefusedException(what + " name '" + name + "' may not contain '/' (it separates module and node)");
+        }
+        if (!name.equals(name.strip())) {
+            throw new EditRefusedException(what + " name '" + name + "' may not begin or end with white space");
+        }
+    }
+
+    public static void checkNode(NodeInfo node) {
+        checkName("node", node.name());
+        if (node.className().isBlank()) {
+            throw new EditRefusedException("node '" + node.name() + "' names no class");
+        }
+    }
+
+    /** A connection must join an existing Data (its data end) and an existing Relation (its relation end). */
+    public static void checkConnectionEnds(NetworkInfo network, ConnectionInfo c) {
+        checkEnd(network, c, c.data(), NodeKind.DATA);
+        checkEnd(network, c, c.relation(), NodeKind.RELATION);
+    }
+
+    private static void checkEnd(NetworkInfo network, ConnectionInfo c, NodeRef ref, NodeKind expected) {
+        ModuleInfo module = network.module(ref.module());
+        if (module == null) {
+            throw new EditRefusedException(c.kind().label() + " names " + ref + " but there is no module '" + ref.module() + "'");
+        }
+        NodeInfo node = module.node(ref.node());
+        if (node == null) {
+            throw new EditRefusedException(c.kind().label() + " names " + ref + " but module '" + ref.module()
+                    + "' has no node '" + ref.node() + "'");
+        }
+        if (node.kind() != expected) {
+            throw new EditRefusedException(c.kind().label() + " must join one Data and one Relation, but " + ref
+                    + " is a " + node.kind().label() + " where a " + expected.label() + " is expected");
+        }
+    }
+}

@@ -1,0 +1,149 @@
+package org.fdnet.netinfo;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+
+/**
+ * A namespace of nodes and the connections it declares. Read-only to the outside: every change goes
+ * through {@link NetworkInfo}, which keeps the whole network coherent and tells its listeners.
+ * Nodes and connections keep the order in which they were declared.
+ */
+public final class ModuleInfo {
+    /** The module of the top-level nodes; always present and always loaded at start. */
+    public static final String MAIN = "main";
+
+    private final String name;
+    private final boolean loadAtStart;
+    private final LinkedHashMap<String, NodeInfo> nodes = new LinkedHashMap<>();
+    private final List<ConnectionInfo> connections = new ArrayList<>();
+
+    ModuleInfo(String name, boolean loadAtStart) {
+        this.name = name;
+        this.loadAtStart = loadAtStart;
+    }
+
+    /** A module of another name or load flag, holding the same nodes and connections. */
+    ModuleInfo with(String newName, boolean newLoadAtStart) {
+        ModuleInfo copy = new ModuleInfo(newName, newLoadAtStart);
+        copy.nodes.putAll(nodes);
+        copy.connections.addAll(connections);
+        return copy;
+    }
+
+    public String name() {
+        return name;
+    }
+
+    public boolean isMain() {
+        return MAIN.equals(name);
+    }
+
+    /** Whether the module is loaded when the network starts; {@code main} always is. */
+    public boolean loadAtStart() {
+        return loadAtStart || isMain();
+    }
+
+    public Collection<NodeInfo> nodes() {
+        return Collections.unmodifiableCollection(nodes.values());
+    }
+
+    public NodeInfo node(String nodeName) {
+        return nodes.get(nodeName);
+    }
+
+    public boolean hasNode(String nodeName) {
+        return nodes.containsKey(nodeName);
+    }
+
+    public List<ConnectionInfo> connections() {
+        return Collections.unmodifiableList(connections);
+    }
+
+    /** The connections this module declares that touch {@code ref} (see {@link NetworkInfo#connectionsOf} for all). */
+    public List<ConnectionInfo> connectionsOf(NodeRef ref) {
+        List<ConnectionInfo> result = new ArrayList<>();
+        for (ConnectionInfo c : connections) {
+            if (c.touches(ref)) {
+                result.add(c);
+            }
+        }
+        return result;
+    }
+
+    public ModuleCounts counts() {
+        int datas = 0;
+        for (NodeInfo n : nodes.values()) {
+            if (n.kind() == NodeKind.DATA) {
+                datas++;
+            }
+        }
+        int readers = 0;
+        for (ConnectionInfo c : connections) {
+            if (c.kind() == ConnectionKind.READER) {
+                readers++;
+            }
+        }
+        return new ModuleCounts(datas, nodes.size() - datas, readers, connections.size() - readers);
+    }
+
+    // ---- mutation, for NetworkInfo only ----
+
+    void putNode(NodeInfo node) {
+        nodes.put(node.name(), node);
+    }
+
+    /** Replaces the node called {@code oldName} keeping its position in the declaration order. */
+    void replaceNodeInPlace(String oldName, NodeInfo node) {
+        if (oldName.equals(node.name())) {
+            nodes.put(oldName, node);
+            return;
+        }
+        LinkedHashMap<String, NodeInfo> reordered = new LinkedHashMap<>();
+        for (Map.Entry<String, NodeInfo> e : nodes.entrySet()) {
+            if (e.getKey().equals(oldName)) {
+                reordered.put(node.name(), node);
+            } else if (!e.getKey().equals(node.name())) {
+                reordered.put(e.getKey(), e.getValue());
+            }
+        }
+        nodes.clear();
+        nodes.putAll(reordered);
+    }
+
+    void removeNode(String nodeName) {
+        nodes.remove(nodeName);
+    }
+
+    void addConnection(ConnectionInfo connection) {
+        connections.add(connection);
+    }
+
+    List<ConnectionInfo> mutableConnections() {
+        return connections;
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        if (!(o instanceof ModuleInfo other)) {
+            return false;
+        }
+        return name.equals(other.name) && loadAtStart() == other.loadAtStart()
+                && new ArrayList<>(nodes.values()).equals(new ArrayList<>(other.nodes.values()))
+                && connections.equals(other.connections);
+    }
+
+    @Override
+    public int hashCode() {
+        return Objects.hash(name, loadAtStart(), connections.size(), nodes.size());
+    }
+
+    @Override
+    public String toString() {
+        return "module " + name + " " + counts();
+    }
+}

@@ -1,0 +1,475 @@
+package org.fdnet.netinfo;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
+import java.util.concurrent.CopyOnWriteArrayList;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The logical layer of a network definition (the thesis's "NetworkInfo"): modules, their nodes and
+ * connections, every edit that keeps them coherent, and the queries the editor and the runtime ask.
+ * It does no I/O: {@code org.fdnet.netinfo.xml} reads and writes it.
+ *
+ * <p>Every edit checks everything it needs <em>before</em> it changes anything, so a refused edit
+ * ({@link EditRefusedException}) leaves the model untouched. Completed edits are told to the
+ * {@link NetworkChangeListener}s. Not thread-safe: one thread (the editor's, or the runtime's
+ * controller) owns a NetworkInfo at a time.
+ */
+public final class NetworkInfo {
+    private static final Logger LOG = LoggerFactory.getLogger(NetworkInfo.class);
+
+    private String name;
+    private final LinkedHashMap<String, ModuleInfo> modules = new LinkedHashMap<>();
+    private final List<NetworkChangeListener> listeners = new CopyOnWriteArrayList<>();
+    private ConnectionIndex index;
+
+    /** An empty network with its {@code main} module. */
+    public NetworkInfo(String name) {
+        this.name = name;
+        modules.put(ModuleInfo.MAIN, new ModuleInfo(ModuleInfo.MAIN, true));
+    }
+
+    /** A deep copy without listeners (nodes and connections are immutable, so sharing them is safe). */
+    public NetworkInfo copy() {
+        NetworkInfo copy = new NetworkInfo(name);
+        copy.modules.clear();
+        for (ModuleInfo m : modules.values()) {
+            copy.modules.put(m.name(), m.with(m.name(), m.loadAtStart()));
+        }
+        return copy;
+    }
+
+    // ---------------------------------------------------------------- reading
+
+    /** The network's name, or {@code null} when the file gives none. */
+    public String name() {
+        return name;
+    }
+
+    public Collection<ModuleInfo> modules() {
+        return Collections.unmodifiableCollection(modules.values());
+    }
+
+    public ModuleInfo module(String moduleName) {
+        return modules.get(moduleName);
+    }
+
+    public ModuleInfo main() {
+        return modules.get(ModuleInfo.MAIN);
+    }
+
+    public NodeInfo node(NodeRef ref) {
+        ModuleInfo m = modules.get(ref.module());
+        return m == null ? null : m.node(ref.node());
+    }
+
+    /**
+     * The node a connection in {@code contextModule} means by {@code reference}: {@code Module/Node}
+     * as written; a bare name is looked up in {@code contextModule}, then in {@code main}.
+     *
+     * @return the node's full name, or {@code null} when no such node exists
+     */
+    public NodeRef resolve(String contextModule, String reference) {
+        if (reference.indexOf('/') >= 0) {
+            NodeRef ref = NodeRef.parse(reference, contextModule);
+            return node(ref) != null ? ref : null;
+        }
+        ModuleInfo own = modules.get(contextModule);
+        if (own != null && own.hasNode(reference)) {
+            return new NodeRef(contextModule, reference);
+        }
+        return main().hasNode(reference) ? new NodeRef(ModuleInfo.MAIN, reference) : null;
+    }
+
+    /** The shortest text that {@link #resolve} turns back into {@code ref} from {@code contextModule}. */
+    public String referenceText(String contextModule, NodeRef ref) {
+        if (ref.module().equals(contextModule)) {
+            return ref.node();
+        }
+        boolean shadowed = modules.containsKey(contextModule) && modules.get(contextModule).hasNode(ref.node());
+        if (ref.module().equals(ModuleInfo.MAIN) && !shadowed) {
+            return ref.node();
+        }
+        return ref.toString();
+    }
+
+    /** Every connection, in any module, that has {@code ref} at one of its ends. */
+    public List<LinkedConnection> connectionsOf(NodeRef ref) {
+        return Collections.unmodifiableList(index().connectionsOf(ref));
+    }
+
+    /**
+     * Every node a value of {@code ref} can flow to: for a Data, the Relations reading it, the Datas
+     * those write, and so on; for a Relation, the Datas it writes, their readers, and so on. The
+     * start node belongs to the result only if it lies on a feedback loop. Breadth-first order.
+     */
+    public Set<NodeRef> descendants(NodeRef ref) {
+        return reach(ref, true);
+    }
+
+    /** Every node whose value can flow into {@code ref}: the mirror image of {@link #descendants}. */
+    public Set<NodeRef> ancestors(NodeRef ref) {
+        return reach(ref, false);
+    }
+
+    private Set<NodeRef> reach(NodeRef start, boolean down) {
+        requireNode(start);
+        ConnectionIndex idx = index();
+        Set<NodeRef> seen = new LinkedHashSet<>();
+        ArrayDeque<NodeRef> queue = new ArrayDeque<>();
+        queue.add(start);
+        while (!queue.isEmpty()) {
+            for (NodeRef next : idx.next(queue.poll(), down)) {
+                if (seen.add(next)) {
+                    queue.add(next);
+                }
+            }
+        }
+        return seen;
+    }
+
+    public ModuleCounts counts(String moduleName) {
+        return requireModule(moduleName).counts();
+    }
+
+    public ModuleCounts totalCounts() {
+        ModuleCounts total = new ModuleCounts(0, 0, 0, 0);
+        for (ModuleInfo m : modules.values()) {
+            total = total.plus(m.counts());
+        }
+        return total;
+    }
+
+    // ---------------------------------------------------------------- listeners
+
+    public void addListener(NetworkChangeListener listener) {
+        listeners.add(Objects.requireNonNull(listener));
+    }
+
+    public void removeListener(NetworkChangeListener listener) {
+        listeners.remove(listener);
+    }
+
+    // ---------------------------------------------------------------- network and modules
+
+    public void setName(String newName) {
+        name = newName;
+        changed(NetworkChange.Kind.NETWORK_RENAMED, null, null);
+    }
+
+    public ModuleInfo addModule(String moduleName, boolean loadAtStart) {
+        ModelRules.checkName("module", moduleName);
+        if (modules.containsKey(moduleName)) {
+            throw new EditRefusedException("the network already has a module named '" + moduleName + "'");
+        }
+        ModuleInfo module = new ModuleInfo(moduleName, loadAtStart);
+        modules.put(moduleName, module);
+        changed(NetworkChange.Kind.MODULE_ADDED, moduleName, null);
+        return module;
+    }
+
+    /** Deletes a module, its nodes, and every connection in any module that touches one of them. */
+    public void deleteModule(String moduleName) {
+        ModuleInfo doomed = requireModule(moduleName);
+        if (doomed.isMain()) {
+            throw new EditRefusedException("module 'main' holds the network's core and cannot be deleted");
+        }
+        modules.remove(moduleName);
+        for (ModuleInfo m : modules.values()) {
+            m.mutableConnections().removeIf(c -> c.data().module().equals(moduleName)
+                    || c.relation().module().equals(moduleName));
+        }
+        changed(NetworkChange.Kind.MODULE_DELETED, moduleName, null);
+    }
+
+    /** Renames a module; connections anywhere that name its nodes follow. */
+    public void renameModule(String oldName, String newName) {
+        ModuleInfo module = requireModule(oldName);
+        if (module.isMain()) {
+            throw new EditRefusedException("module 'main' cannot be renamed");
+        }
+        ModelRules.checkName("module", newName);
+        if (oldName.equals(newName)) {
+            return;
+        }
+        if (modules.containsKey(newName)) {
+            throw new EditRefusedException("cannot rename module '" + oldName + "': the network already has a module named '" + newName + "'");
+        }
+        LinkedHashMap<String, ModuleInfo> reordered = new LinkedHashMap<>();
+        for (ModuleInfo m : modules.values()) {
+            ModuleInfo kept = m == module ? m.with(newName, m.loadAtStart()) : m;
+            reordered.put(kept.name(), kept);
+        }
+        modules.clear();
+        modules.putAll(reordered);
+        for (ModuleInfo m : modules.values()) {
+            m.mutableConnections().replaceAll(c -> new ConnectionInfo(c.kind(), c.name(),
+                    moved(c.data(), oldName, newName), moved(c.relation(), oldName, newName),
+                    c.exists(), c.dataInline(), c.relationInline()));
+        }
+        changed(NetworkChange.Kind.MODULE_RENAMED, newName, oldName);
+    }
+
+    private static NodeRef moved(NodeRef ref, String oldModule, String newModule) {
+        return ref.module().equals(oldModule) ? new NodeRef(newModule, ref.node()) : ref;
+    }
+
+    public void setLoadAtStart(String moduleName, boolean loadAtStart) {
+        ModuleInfo module = requireModule(moduleName);
+        if (module.isMain() && !loadAtStart) {
+            throw new EditRefusedException("module 'main' is always loaded at start");
+        }
+        modules.put(moduleName, module.with(moduleName, loadAtStart));
+        changed(NetworkChange.Kind.MODULE_LOAD_AT_START_CHANGED, moduleName, null);
+    }
+
+    // ---------------------------------------------------------------- nodes
+
+    public NodeRef addNode(String moduleName, NodeInfo node) {
+        ModuleInfo module = requireModule(moduleName);
+        ModelRules.checkNode(node);
+        if (module.hasNode(node.name())) {
+            throw new EditRefusedException("module '" + moduleName + "' already has a node named '" + node.name()
+                    + "' (replace or merge it instead)");
+        }
+        module.putNode(node);
+        changed(NetworkChange.Kind.NODE_ADDED, moduleName, node.name());
+        return new NodeRef(moduleName, node.name());
+    }
+
+    /** Changes a node's host, path, class or parameters. Its name and kind stay (rename, replace, merge for those). */
+    public void updateNode(NodeRef ref, NodeInfo updated) {
+        NodeInfo current = requireNode(ref);
+        ModelRules.checkNode(updated);
+        if (!updated.name().equals(current.name())) {
+            throw new EditRefusedException("updateNode keeps the name '" + current.name() + "'; use renameNode");
+        }
+        if (updated.kind() != current.kind()) {
+            boolean connected = !connectionsOf(ref).isEmpty();
+            if (connected) {
+                throw new EditRefusedException(ref + " is connected: a " + current.kind().label()
+                        + " cannot become a " + updated.kind().label() + " while connections need it as it is");
+            }
+        }
+        modules.get(ref.module()).replaceNodeInPlace(ref.node(), updated);
+        changed(NetworkChange.Kind.NODE_CHANGED, ref.module(), ref.node());
+    }
+
+    public void setParameters(NodeRef ref, List<Parameter> parameters) {
+        updateNode(ref, requireNode(ref).withParameters(parameters));
+    }
+
+    /** Deletes a node and every connection, in any module, that touches it. */
+    public void deleteNode(NodeRef ref) {
+        requireNode(ref);
+        removeConnectionsTouching(ref);
+        modules.get(ref.module()).removeNode(ref.node());
+        changed(NetworkChange.Kind.NODE_DELETED, ref.module(), ref.node());
+    }
+
+    /** Renames a node in its module; its connections follow. A name already used is refused: replace or merge. */
+    public NodeRef renameNode(NodeRef ref, String newName) {
+        NodeInfo node = requireNode(ref);
+        ModelRules.checkName("node", newName);
+        NodeRef renamed = new NodeRef(ref.module(), newName);
+        if (newName.equals(ref.node())) {
+            return ref;
+        }
+        if (modules.get(ref.module()).hasNode(newName)) {
+            throw new EditRefusedException("module '" + ref.module() + "' already has a node named '" + newName
+                    + "': replace or merge the two nodes instead");
+        }
+        modules.get(ref.module()).replaceNodeInPlace(ref.node(), node.withName(newName));
+        redirectConnections(ref, renamed);
+        changed(NetworkChange.Kind.NODE_RENAMED, ref.module(), ref.node());
+        return renamed;
+    }
+
+    /**
+     * Replace Node (thesis Figure 28): {@code replaced} and all its connections go; {@code replacement}
+     * takes its name and place and keeps only its own connections. Both live in the same module.
+     */
+    public NodeRef replaceNode(NodeRef replaced, NodeRef replacement) {
+        requireNode(replaced);
+        NodeInfo replacing = requireNode(replacement);
+        if (!replaced.module().equals(replacement.module())) {
+            throw new EditRefusedException("replace works within one module: " + replaced + " and " + replacement + " are in different modules");
+        }
+        if (replaced.equals(replacement)) {
+            throw new EditRefusedException("a node cannot replace itself: " + replaced);
+        }
+        removeConnectionsTouching(replaced);
+        ModuleInfo module = modules.get(replaced.module());
+        module.removeNode(replacement.node());
+        module.replaceNodeInPlace(replaced.node(), replacing.withName(replaced.node()));
+        redirectConnections(replacement, replaced);
+        changed(NetworkChange.Kind.NODE_REPLACED, replaced.module(), replaced.node());
+        return replaced;
+    }
+
+    /**
+     * Merge Nodes (thesis Figure 29): one node results, at {@code first}'s place and with its name,
+     * host, path and class; the parameters follow {@code policy}. Every connection of either node is
+     * redirected to it; connections that become identical are kept once.
+     */
+    public NodeRef mergeNodes(NodeRef first, NodeRef second, MergePolicy policy) {
+        NodeInfo a = requireNode(first);
+        NodeInfo b = requireNode(second);
+        Objects.requireNonNull(policy, "policy");
+        if (first.equals(second)) {
+            throw new EditRefusedException("a node cannot be merged with itself: " + first);
+        }
+        if (a.kind() != b.kind()) {
+            throw new EditRefusedException("cannot merge " + first + " (a " + a.kind().label() + ") with " + second
+                    + " (a " + b.kind().label() + "): their connections would no longer join one Data and one Relation");
+        }
+        modules.get(first.module()).replaceNodeInPlace(first.node(), a.withParameters(mergedParameters(a, b, policy)));
+        modules.get(second.module()).removeNode(second.node());
+        redirectConnections(second, first);
+        for (ModuleInfo m : modules.values()) {
+            List<ConnectionInfo> kept = new ArrayList<>();
+            for (ConnectionInfo c : m.connections()) {
+                if (kept.stream().noneMatch(k -> k.sameLink(c))) {
+                    kept.add(c);
+                }
+            }
+            m.mutableConnections().retainAll(kept);
+        }
+        changed(NetworkChange.Kind.NODES_MERGED, first.module(), first.node());
+        return first;
+    }
+
+    private static List<Parameter> mergedParameters(NodeInfo a, NodeInfo b, MergePolicy policy) {
+        switch (policy) {
+            case FIRST:
+                return a.parameters();
+            case SECOND:
+                return b.parameters();
+            case BOTH:
+                List<Parameter> both = new ArrayList<>(a.parameters());
+                for (Parameter p : b.parameters()) {
+                    boolean clash = p.name() != null
+                            ? both.stream().anyMatch(q -> p.name().equals(q.name()))
+                            : both.contains(p);
+                    if (!clash) {
+                        both.add(p);
+                    }
+                }
+                return both;
+            default:
+                throw new AssertionError(policy);
+        }
+    }
+
+    // ---------------------------------------------------------------- connections
+
+    /** Adds a connection declared by {@code moduleName}; its ends must be one existing Data and one existing Relation. */
+    public void addConnection(String moduleName, ConnectionInfo connection) {
+        ModuleInfo module = requireModule(moduleName);
+        ModelRules.checkConnectionEnds(this, connection);
+        for (LinkedConnection existing : index().connectionsOf(connection.data())) {
+            if (existing.connection().sameLink(connection)) {
+                throw new EditRefusedException("duplicate " + connection + " (already declared in module '" + existing.module() + "')");
+            }
+        }
+        module.addConnection(connection);
+        if (index != null) {
+            index.add(moduleName, connection);
+        }
+        changed(NetworkChange.Kind.CONNECTION_ADDED, moduleName, connection.toString());
+    }
+
+    public void deleteConnection(String moduleName, ConnectionInfo connection) {
+        ModuleInfo module = requireModule(moduleName);
+        if (!module.mutableConnections().remove(connection)) {
+            throw new EditRefusedException("module '" + moduleName + "' declares no " + connection);
+        }
+        changed(NetworkChange.Kind.CONNECTION_DELETED, moduleName, connection.toString());
+    }
+
+    // ---------------------------------------------------------------- internals
+
+    private void removeConnectionsTouching(NodeRef ref) {
+        for (ModuleInfo m : modules.values()) {
+            m.mutableConnections().removeIf(c -> c.touches(ref));
+        }
+    }
+
+    private void redirectConnections(NodeRef from, NodeRef to) {
+        for (ModuleInfo m : modules.values()) {
+            m.mutableConnections().replaceAll(c -> c.redirect(from, to));
+        }
+    }
+
+    private ModuleInfo requireModule(String moduleName) {
+        ModuleInfo module = modules.get(moduleName);
+        if (module == null) {
+            throw new EditRefusedException("the network has no module named '" + moduleName + "'");
+        }
+        return module;
+    }
+
+    private NodeInfo requireNode(NodeRef ref) {
+        NodeInfo node = requireModule(ref.module()).node(ref.node());
+        if (node == null) {
+            throw new EditRefusedException("module '" + ref.module() + "' has no node named '" + ref.node() + "'");
+        }
+        return node;
+    }
+
+    private ConnectionIndex index() {
+        if (index == null) {
+            index = new ConnectionIndex(modules.values());
+        }
+        return index;
+    }
+
+    private void changed(NetworkChange.Kind kind, String module, String subject) {
+        if (kind.movesConnections()) {
+            index = null;
+        }
+        NetworkChange change = new NetworkChange(kind, module, subject);
+        for (NetworkChangeListener listener : listeners) {
+            try {
+                listener.networkChanged(change);
+            } catch (RuntimeException e) {
+                LOG.warn("network change listener {} failed on {}", listener, change, e);
+            }
+        }
+    }
+
+    // ---------------------------------------------------------------- identity
+
+    /** Two networks are equal when they have the same name and the same modules, nodes and connections in the same order. */
+    @Override
+    public boolean equals(Object o) {
+        if (!(o instanceof NetworkInfo other)) {
+            return false;
+        }
+        return Objects.equals(name, other.name)
+                && new ArrayList<>(modules.values()).equals(new ArrayList<>(other.modules.values()));
+    }
+
+    @Override
+    public int hashCode() {
+        return Objects.hash(name, modules.keySet());
+    }
+
+    @Override
+    public String toString() {
+        StringBuilder sb = new StringBuilder("network ").append(name == null ? "(unnamed)" : name);
+        for (Map.Entry<String, ModuleInfo> e : modules.entrySet()) {
+            sb.append("\n  ").append(e.getValue());
+        }
+        return sb.toString();
+    }
+}

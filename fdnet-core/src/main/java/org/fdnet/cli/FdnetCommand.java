@@ -11,7 +11,8 @@ import picocli.CommandLine.Spec;
  * here; the other parts add theirs through {@link CommandProvider}.
  */
 @Command(name = "fdnet", mixinStandardHelpOptions = true, version = "FDNet 0.1.0",
-        description = "Flat Distributed Network: define, check, run and observe FDNetworks.")
+        description = "Flat Distributed Network: define, check, run and observe FDNetworks.",
+        subcommands = {ValidateCommand.class, InfoCommand.class, FmtCommand.class})
 public final class FdnetCommand implements Runnable {
     @Spec
     CommandSpec spec;

@@ -55,6 +55,14 @@ public record ConnectionInfo(ConnectionKind kind, String name, NodeRef data, Nod
         return kind == other.kind && data.equals(other.data) && relation.equals(other.relation);
     }
 
+    /**
+     * Same link, name and exist flag: the connection means the same. Whether a file declared an end
+     * inline is only the file's shape, so it does not count.
+     */
+    public boolean sameDeclaration(ConnectionInfo other) {
+        return sameLink(other) && java.util.Objects.equals(name, other.name) && exists == other.exists;
+    }
+
     @Override
     public String toString() {
         return kind == ConnectionKind.READER

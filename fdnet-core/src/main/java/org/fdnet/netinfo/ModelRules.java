@@ -16,6 +16,9 @@ public final class ModelRules {
         if (name.indexOf('/') >= 0) {
             throw new EditRefusedException(what + " name '" + name + "' may not contain '/' (it separates module and node)");
         }
+        if (name.chars().anyMatch(Character::isISOControl)) {
+            throw new EditRefusedException(what + " name '" + name + "' may not contain control characters (tabs, line breaks)");
+        }
         if (!name.equals(name.strip())) {
             throw new EditRefusedException(what + " name '" + name + "' may not begin or end with white space");
         }

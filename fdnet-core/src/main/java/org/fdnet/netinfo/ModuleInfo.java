@@ -134,7 +134,19 @@ public final class ModuleInfo {
         }
         return name.equals(other.name) && loadAtStart() == other.loadAtStart()
                 && new ArrayList<>(nodes.values()).equals(new ArrayList<>(other.nodes.values()))
-                && connections.equals(other.connections);
+                && sameDeclarations(connections, other.connections);
+    }
+
+    private static boolean sameDeclarations(List<ConnectionInfo> a, List<ConnectionInfo> b) {
+        if (a.size() != b.size()) {
+            return false;
+        }
+        for (int i = 0; i < a.size(); i++) {
+            if (!a.get(i).sameDeclaration(b.get(i))) {
+                return false;
+            }
+        }
+        return true;
     }
 
     @Override

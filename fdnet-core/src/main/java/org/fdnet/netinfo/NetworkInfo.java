@@ -342,7 +342,8 @@ public final class NetworkInfo {
                     kept.add(c);
                 }
             }
-            m.mutableConnections().retainAll(kept);
+            m.mutableConnections().clear();
+            m.mutableConnections().addAll(kept);
         }
         changed(NetworkChange.Kind.NODES_MERGED, first.module(), first.node());
         return first;

@@ -1,0 +1,51 @@
+package org.fdnet.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.fdnet.netinfo.ModuleCounts;
+import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.netinfo.xml.NetworkFileException;
+import org.fdnet.netinfo.xml.NetworkRepository;
+import org.fdnet.netinfo.xml.Problem;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code fdnet info FILE}: the network in numbers, per module (the thesis's "FDNetworks in numbers"). */
+@Command(name = "info", mixinStandardHelpOptions = true,
+        description = "Show a network in numbers: modules, Datas, Relations, Readers and Writers per module.")
+public final class InfoCommand implements Callable<Integer> {
+    @Parameters(paramLabel = "FILE", description = "the .fdn network definition")
+    Path file;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        NetworkInfo network;
+        try {
+            network = NetworkRepository.load(file);
+        } catch (NetworkFileException e) {
+            e.problems().stream().map(Problem::toString).forEach(out::println);
+            out.flush();
+            return 1;
+        }
+        out.printf("network %s (%s), %d modules%n", network.name() == null ? "(unnamed)" : network.name(), file,
+                network.modules().size());
+        String row = "%-20s %-6s %7s %10s %8s %8s%n";
+        out.printf(row, "module", "load", "Datas", "Relations", "Readers", "Writers");
+        for (ModuleInfo m : network.modules()) {
+            ModuleCounts c = m.counts();
+            out.printf(row, m.name(), m.loadAtStart() ? "start" : "later", c.datas(), c.relations(), c.readers(), c.writers());
+        }
+        ModuleCounts t = network.totalCounts();
+        out.printf(row, "total", "", t.datas(), t.relations(), t.readers(), t.writers());
+        out.flush();
+        return 0;
+    }
+}

@@ -1,0 +1,65 @@
+package org.fdnet.corba;
+
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * JacORB's Naming Service ({@code org.jacorb.naming.NameServer}) run in this JVM: the directory in which
+ * hosts register. It answers {@code corbaloc::ADDRESS:PORT/NameService}.
+ */
+public final class NamingService {
+    private static final Logger LOG = LoggerFactory.getLogger(NamingService.class);
+
+    private NamingService() {
+    }
+
+    /**
+     * Starts the NameServer on a daemon thread and returns once its port accepts connections.
+     *
+     * @throws IllegalStateException when it does not listen within {@code timeoutMillis}
+     */
+    public static String start(OrbSettings settings, long timeoutMillis) {
+        if (settings.port() == 0) {
+            throw new IllegalArgumentException("the naming service needs a fixed port (clients must know it)");
+        }
+        OrbRuntime.prepareJvm();
+        List<String> args = new ArrayList<>();
+        for (Map.Entry<Object, Object> e : settings.toNamingServerProperties().entrySet()) {
+            args.add("-D" + e.getKey() + "=" + e.getValue());
+        }
+        Thread server = new Thread(() -> org.jacorb.naming.NameServer.main(args.toArray(String[]::new)),
+                "fdnet-naming");
+        server.setDaemon(true);
+        server.start();
+        long deadline = System.nanoTime() + timeoutMillis * 1_000_000L;
+        while (System.nanoTime() < deadline) {
+            try (Socket s = new Socket()) {
+                s.connect(new InetSocketAddress(settings.bindAddress(), settings.port()), 200);
+                String corbaloc = OrbSettings.namingCorbaloc(settings.bindAddress(), settings.port());
+                LOG.info("naming service listening: {}", corbaloc);
+                return corbaloc;
+            } catch (IOException notYet) {
+                if (!server.isAlive()) {
+                    break;
+                }
+                sleep(50);
+            }
+        }
+        throw new IllegalStateException("the naming service did not listen on " + settings.bindAddress() + ":"
+                + settings.port() + " (is the port in use?)");
+    }
+
+    private static void sleep(long millis) {
+        try {
+            Thread.sleep(millis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}

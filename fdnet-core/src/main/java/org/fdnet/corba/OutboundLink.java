@@ -1,0 +1,276 @@
+package org.fdnet.corba;
+
+import java.util.Objects;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.fdnet.corba.idl.UnknownLink;
+import org.fdnet.corba.idl.Value;
+import org.fdnet.corba.idl.ValueBatch;
+import org.fdnet.corba.idl.ValueSink;
+import org.omg.CORBA.SystemException;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The sending end of one cross-host link: values of one local node go, in order and without loss, to a
+ * {@link ValueSink} on another host.
+ *
+ * <pre>
+ *   offer(v) ──▶ ring [headSeq … sendSeq … tailSeq)      (bounded: LinkSettings.capacity)
+ *                 │ dispatcher: up to batchMax values per call, at most `window` calls in flight
+ *                 ▼
+ *               callers ──deliver(ValueBatch)──▶ peer ──▶ returns next expected seq ──▶ headSeq moves
+ * </pre>
+ *
+ * Values leave the ring only when the peer has applied them (the reply of {@code deliver}). When a call
+ * fails the link is <em>broken</em>: it rewinds to the oldest unacknowledged value and, every
+ * {@code retryMillis}, probes the peer with one batch; {@link #retarget} points it at a restarted peer.
+ * After a (re)start only one batch is in flight until the peer has acknowledged one, so a fresh receiver
+ * learns where the sequence stands before batches can overtake each other.
+ */
+public final class OutboundLink implements AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(OutboundLink.class);
+    private static final AtomicInteger THREADS = new AtomicInteger();
+
+    /** Told when a link breaks and when it carries values again. */
+    public interface StateListener {
+        void broken(OutboundLink link, String reason);
+
+        void restored(OutboundLink link);
+    }
+
+    private final long id;
+    private final String description;
+    private final LinkSettings settings;
+    private final StateListener listener;
+    private final ExecutorService callers;
+    private final Thread dispatcher;
+
+    private final Object lock = new Object();
+    private final Object[] ring;
+    private final int mask;
+    private long headSeq;
+    private long sendSeq;
+    private long tailSeq;
+    private int inFlight;
+    private boolean probing = true;
+    private boolean broken;
+    private boolean closed;
+    private boolean writerWaiting;
+    private boolean dispatcherWaiting;
+    private long lost;
+    private long nextProbeNanos;
+    private long generation;
+    private ValueSink sink;
+
+    public OutboundLink(long id, String description, ValueSink sink, LinkSettings settings, StateListener listener) {
+        this.id = id;
+        this.description = Objects.requireNonNull(description, "description");
+        this.sink = Objects.requireNonNull(sink, "sink");
+        this.settings = Objects.requireNonNull(settings, "settings");
+        this.listener = Objects.requireNonNull(listener, "listener");
+        this.ring = new Object[settings.capacity()];
+        this.mask = settings.capacity() - 1;
+        this.callers = Executors.newFixedThreadPool(settings.window(), r -> {
+            Thread t = new Thread(r, "fdnet-link-" + id + "-call-" + THREADS.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        });
+        this.dispatcher = new Thread(this::dispatch, "fdnet-link-" + id);
+        this.dispatcher.setDaemon(true);
+        this.dispatcher.start();
+    }
+
+    public long id() {
+        return id;
+    }
+
+    public String description() {
+        return description;
+    }
+
+    /** Queues one value; waits while the ring is full and the peer reachable (flow control, never loss). */
+    public void offer(Object value) {
+        synchronized (lock) {
+            while (!closed && tailSeq - headSeq == ring.length) {
+                if (broken) {
+                    ring[(int) (headSeq & mask)] = null;
+                    headSeq++;
+                    sendSeq = Math.max(sendSeq, headSeq);
+                    lost++;
+                    break;
+                }
+                writerWaiting = true;
+                try {
+                    lock.wait(settings.retryMillis());
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    return;
+                }
+            }
+            if (closed) {
+                return;
+            }
+            ring[(int) (tailSeq & mask)] = value;
+            tailSeq++;
+            if (dispatcherWaiting) {
+                lock.notifyAll();
+            }
+        }
+    }
+
+    /** Points the link at a new sink (its peer restarted); everything unacknowledged is sent again. */
+    public void retarget(ValueSink newSink) {
+        synchronized (lock) {
+            sink = Objects.requireNonNull(newSink, "newSink");
+            generation++;
+            inFlight = 0; // calls to the old sink no longer count against the window
+            sendSeq = headSeq;
+            probing = true;
+            broken = false;
+            lock.notifyAll();
+        }
+    }
+
+    public boolean broken() {
+        synchronized (lock) {
+            return broken;
+        }
+    }
+
+    /** Values dropped because the ring overflowed while the peer was down. */
+    public long lost() {
+        synchronized (lock) {
+            return lost;
+        }
+    }
+
+    /** Values offered and not yet acknowledged by the peer. */
+    public long pending() {
+        synchronized (lock) {
+            return tailSeq - headSeq;
+        }
+    }
+
+    /** Values the peer has acknowledged. */
+    public long acknowledged() {
+        synchronized (lock) {
+            return headSeq - lost;
+        }
+    }
+
+    private void dispatch() {
+        while (true) {
+            Object[] values;
+            long firstSeq;
+            long callGeneration;
+            ValueSink target;
+            synchronized (lock) {
+                while (!closed && !readyToSend()) {
+                    dispatcherWaiting = true;
+                    try {
+                        lock.wait(broken ? settings.retryMillis() : 0);
+                    } catch (InterruptedException e) {
+                        return;
+                    }
+                    dispatcherWaiting = false;
+                    if (broken && inFlight == 0 && sendSeq < tailSeq && System.nanoTime() >= nextProbeNanos) {
+                        break; // time to probe the peer again
+                    }
+                }
+                if (closed) {
+                    return;
+                }
+                int n = (int) Math.min(tailSeq - sendSeq, settings.batchMax());
+                values = new Object[n];
+                for (int i = 0; i < n; i++) {
+                    values[i] = ring[(int) ((sendSeq + i) & mask)];
+                }
+                firstSeq = sendSeq;
+                sendSeq += n;
+                inFlight++;
+                callGeneration = generation;
+                target = sink;
+            }
+            callers.execute(() -> call(target, firstSeq, values, callGeneration));
+        }
+    }
+
+    private boolean readyToSend() {
+        if (broken || sendSeq == tailSeq) {
+            return false;
+        }
+        return inFlight < (probing ? 1 : settings.window());
+    }
+
+    private void call(ValueSink target, long firstSeq, Object[] values, long callGeneration) {
+        Value[] encoded = new Value[values.length];
+        for (int i = 0; i < values.length; i++) {
+            encoded[i] = ValueCodec.encode(values[i]);
+        }
+        long expected;
+        String failure;
+        try {
+            expected = target.deliver(new ValueBatch(id, firstSeq, encoded));
+            failure = null;
+        } catch (UnknownLink e) {
+            expected = -1;
+            failure = "the peer does not know link " + id + " (it restarted and is not re-wired yet)";
+        } catch (SystemException e) {
+            expected = -1;
+            failure = e.getClass().getSimpleName() + " " + e.getMessage();
+        }
+        boolean restored = false;
+        boolean newlyBroken = false;
+        synchronized (lock) {
+            if (callGeneration == generation) {
+                inFlight--;
+                if (failure == null) {
+                    acknowledge(expected);
+                    restored = broken;
+                    broken = false;
+                    probing = false;
+                } else {
+                    newlyBroken = !broken;
+                    broken = true;
+                    sendSeq = headSeq;
+                    probing = true;
+                    nextProbeNanos = System.nanoTime() + settings.retryMillis() * 1_000_000L;
+                }
+            }
+            lock.notifyAll();
+        }
+        if (newlyBroken) {
+            LOG.warn("link {} broken: {}", description, failure);
+            listener.broken(this, failure);
+        } else if (restored) {
+            LOG.info("link {} carries values again", description);
+            listener.restored(this);
+        }
+    }
+
+    private void acknowledge(long expected) {
+        long upTo = Math.min(expected, tailSeq);
+        while (headSeq < upTo) {
+            ring[(int) (headSeq & mask)] = null;
+            headSeq++;
+        }
+        if (sendSeq < headSeq) {
+            sendSeq = headSeq;
+        }
+        if (writerWaiting) {
+            writerWaiting = false;
+        }
+    }
+
+    @Override
+    public void close() {
+        synchronized (lock) {
+            closed = true;
+            lock.notifyAll();
+        }
+        dispatcher.interrupt();
+        callers.shutdownNow();
+    }
+}

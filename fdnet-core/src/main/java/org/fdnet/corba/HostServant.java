@@ -82,9 +82,9 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     }
 
     @Override
-    public void createStandIn(NodeSpec spec) throws Refused {
+    public void createStandIn(NodeSpec spec, String homeHost) throws Refused {
         NodeRef ref = IdlMapping.ref(spec.id);
-        refuseOnError(ref, () -> network.createStandIn(ref, IdlMapping.node(spec, hostName)));
+        refuseOnError(ref, () -> network.createStandIn(ref, IdlMapping.node(spec, homeHost)));
         notifier.publish(ChangeKind.NODE_CREATED, ref + " (stand-in)");
     }
 

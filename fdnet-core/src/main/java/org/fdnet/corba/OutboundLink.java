@@ -1,8 +1,6 @@
 package org.fdnet.corba;
 
 import java.util.Objects;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.fdnet.corba.idl.UnknownLink;
 import org.fdnet.corba.idl.Value;
@@ -18,9 +16,9 @@ import org.slf4j.LoggerFactory;
  *
  * <pre>
  *   offer(v) ──▶ ring [headSeq … sendSeq … tailSeq)      (bounded: LinkSettings.capacity)
- *                 │ dispatcher: up to batchMax values per call, at most `window` calls in flight
+ *                 │ `window` caller threads: each takes up to batchMax values and calls the peer
  *                 ▼
- *               callers ──deliver(ValueBatch)──▶ peer ──▶ returns next expected seq ──▶ headSeq moves
+ *               deliver(ValueBatch) ──▶ peer ──▶ returns next expected seq ──▶ headSeq moves
  * </pre>
  *
  * Values leave the ring only when the peer has applied them (the reply of {@code deliver}). When a call
@@ -44,8 +42,7 @@ public final class OutboundLink implements AutoCloseable {
     private final String description;
     private final LinkSettings settings;
     private final StateListener listener;
-    private final ExecutorService callers;
-    private final Thread dispatcher;
+    private final Thread[] callers;
 
     private final Object lock = new Object();
     private final Object[] ring;
@@ -58,7 +55,7 @@ public final class OutboundLink implements AutoCloseable {
     private boolean broken;
     private boolean closed;
     private boolean writerWaiting;
-    private boolean dispatcherWaiting;
+    private int waitingCallers;
     private long lost;
     private long nextProbeNanos;
     private long generation;
@@ -72,14 +69,12 @@ public final class OutboundLink implements AutoCloseable {
         this.listener = Objects.requireNonNull(listener, "listener");
         this.ring = new Object[settings.capacity()];
         this.mask = settings.capacity() - 1;
-        this.callers = Executors.newFixedThreadPool(settings.window(), r -> {
-            Thread t = new Thread(r, "fdnet-link-" + id + "-call-" + THREADS.incrementAndGet());
-            t.setDaemon(true);
-            return t;
-        });
-        this.dispatcher = new Thread(this::dispatch, "fdnet-link-" + id);
-        this.dispatcher.setDaemon(true);
-        this.dispatcher.start();
+        this.callers = new Thread[settings.window()];
+        for (int i = 0; i < callers.length; i++) {
+            callers[i] = new Thread(this::sendLoop, "fdnet-link-" + id + "-" + THREADS.incrementAndGet());
+            callers[i].setDaemon(true);
+            callers[i].start();
+        }
     }
 
     public long id() {
@@ -114,8 +109,12 @@ public final class OutboundLink implements AutoCloseable {
             }
             ring[(int) (tailSeq & mask)] = value;
             tailSeq++;
-            if (dispatcherWaiting) {
-                lock.notifyAll();
+            if (waitingCallers > 0) {
+                if (writerWaiting) {
+                    lock.notifyAll();
+                } else {
+                    lock.notify();
+                }
             }
         }
     }
@@ -160,7 +159,8 @@ public final class OutboundLink implements AutoCloseable {
         }
     }
 
-    private void dispatch() {
+    /** One of {@code window} caller threads: takes the next batch, calls the peer, acknowledges. */
+    private void sendLoop() {
         while (true) {
             Object[] values;
             long firstSeq;
@@ -168,15 +168,13 @@ public final class OutboundLink implements AutoCloseable {
             ValueSink target;
             synchronized (lock) {
                 while (!closed && !readyToSend()) {
-                    dispatcherWaiting = true;
+                    waitingCallers++;
                     try {
                         lock.wait(broken ? settings.retryMillis() : 0);
                     } catch (InterruptedException e) {
                         return;
-                    }
-                    dispatcherWaiting = false;
-                    if (broken && inFlight == 0 && sendSeq < tailSeq && System.nanoTime() >= nextProbeNanos) {
-                        break; // time to probe the peer again
+                    } finally {
+                        waitingCallers--;
                     }
                 }
                 if (closed) {
@@ -193,13 +191,16 @@ public final class OutboundLink implements AutoCloseable {
                 callGeneration = generation;
                 target = sink;
             }
-            callers.execute(() -> call(target, firstSeq, values, callGeneration));
+            call(target, firstSeq, values, callGeneration);
         }
     }
 
     private boolean readyToSend() {
-        if (broken || sendSeq == tailSeq) {
+        if (sendSeq == tailSeq) {
             return false;
+        }
+        if (broken) {
+            return inFlight == 0 && System.nanoTime() >= nextProbeNanos; // probe the peer again
         }
         return inFlight < (probing ? 1 : settings.window());
     }
@@ -270,7 +271,8 @@ public final class OutboundLink implements AutoCloseable {
             closed = true;
             lock.notifyAll();
         }
-        dispatcher.interrupt();
-        callers.shutdownNow();
+        for (Thread t : callers) {
+            t.interrupt();
+        }
     }
 }

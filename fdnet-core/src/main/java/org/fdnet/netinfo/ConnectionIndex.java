@@ -6,15 +6,21 @@ import java.util.List;
 import java.util.Map;
 
 /**
- * Connections by node, across all modules, built in one pass over the network. NetworkInfo keeps one
- * and rebuilds it lazily after a change, so queries on a 20,000-connection network cost microseconds
- * while an edit costs nothing extra.
+ * Connections by node, across all modules, and where values flow from each node: one entry per
+ * node, so a traversal step costs one hash lookup. NetworkInfo keeps one index, extends it in place
+ * when a connection is added and drops it when connections are removed or re-pointed (it is rebuilt
+ * in one pass on the next query).
  */
 final class ConnectionIndex {
-    private final Map<NodeRef, List<LinkedConnection>> byNode = new HashMap<>();
-    /** Where a value can flow next: Data to its readers, Relation to the Datas it writes. */
-    private final Map<NodeRef, List<NodeRef>> downstream = new HashMap<>();
-    private final Map<NodeRef, List<NodeRef>> upstream = new HashMap<>();
+    private final Map<NodeRef, Entry> entries = new HashMap<>();
+
+    private static final class Entry {
+        final List<LinkedConnection> connections = new ArrayList<>(4);
+        /** Data: the Relations reading it; Relation: the Datas it writes. */
+        final List<NodeRef> downstream = new ArrayList<>(2);
+        /** Data: the Relations writing it; Relation: the Datas it reads. */
+        final List<NodeRef> upstream = new ArrayList<>(2);
+    }
 
     ConnectionIndex(Iterable<ModuleInfo> modules) {
         for (ModuleInfo module : modules) {
@@ -26,19 +32,27 @@ final class ConnectionIndex {
 
     void add(String module, ConnectionInfo c) {
         LinkedConnection linked = new LinkedConnection(module, c);
-        byNode.computeIfAbsent(c.data(), k -> new ArrayList<>(4)).add(linked);
-        byNode.computeIfAbsent(c.relation(), k -> new ArrayList<>(4)).add(linked);
-        NodeRef from = c.kind() == ConnectionKind.READER ? c.data() : c.relation();
-        NodeRef to = c.kind() == ConnectionKind.READER ? c.relation() : c.data();
-        downstream.computeIfAbsent(from, k -> new ArrayList<>(4)).add(to);
-        upstream.computeIfAbsent(to, k -> new ArrayList<>(4)).add(from);
+        Entry data = entries.computeIfAbsent(c.data(), k -> new Entry());
+        Entry relation = entries.computeIfAbsent(c.relation(), k -> new Entry());
+        data.connections.add(linked);
+        relation.connections.add(linked);
+        if (c.kind() == ConnectionKind.READER) {
+            data.downstream.add(c.relation());
+            relation.upstream.add(c.data());
+        } else {
+            relation.downstream.add(c.data());
+            data.upstream.add(c.relation());
+        }
     }
 
     List<LinkedConnection> connectionsOf(NodeRef ref) {
-        return byNode.getOrDefault(ref, List.of());
+        Entry e = entries.get(ref);
+        return e == null ? List.of() : e.connections;
     }
 
+    /** Where a value can flow next from {@code ref} ({@code down}) or came from ({@code !down}). */
     List<NodeRef> next(NodeRef ref, boolean down) {
-        return (down ? downstream : upstream).getOrDefault(ref, List.of());
+        Entry e = entries.get(ref);
+        return e == null ? List.of() : down ? e.downstream : e.upstream;
     }
 }

@@ -7,15 +7,19 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.fdnet.netinfo.NodeInfo;
+import org.fdnet.runtime.loading.ClassLoadingPolicy;
 
 /**
  * Which node classes a remote create may instantiate on this host: FDNet's built-in classes (empty
- * {@code path}, class in {@code org.fdnet.}), or classes whose {@code path} lies inside one of the
+ * {@code path}, a bare library name or a class in {@link #BUILT_IN_PACKAGES}), or classes whose
+ * {@code path} lies inside one of the
  * folders the host was started with ({@code --allow-path}). Anything else is refused before a class is
  * loaded, so a network file from another machine cannot run arbitrary code here.
  */
 public final class ClassPolicy {
-    private static final String BUILT_IN_PACKAGE = "org.fdnet.";
+    /** Packages whose classes need no path: the runtime's library, the simulated robot, the benchmark's. */
+    public static final List<String> BUILT_IN_PACKAGES = List.of(ClassLoadingPolicy.LIBRARY_PACKAGE,
+            ClassLoadingPolicy.ROQ_PACKAGE, "org.fdnet.corba.bench.");
 
     private final List<Path> allowed;
 
@@ -38,9 +42,10 @@ public final class ClassPolicy {
     /** Why {@code node} may not be created here, or {@code null} when it may. */
     public String refusal(NodeInfo node) {
         if (node.path().isEmpty()) {
-            return node.className().startsWith(BUILT_IN_PACKAGE) ? null
-                    : "class " + node.className() + " has no path and is not a built-in (" + BUILT_IN_PACKAGE
-                    + "*) class";
+            String c = node.className();
+            boolean builtIn = !c.contains(".") || BUILT_IN_PACKAGES.stream().anyMatch(c::startsWith);
+            return builtIn ? null
+                    : "class " + c + " of " + node.name() + " has no path and is not built in (" + BUILT_IN_PACKAGES + ")";
         }
         Path real;
         try {

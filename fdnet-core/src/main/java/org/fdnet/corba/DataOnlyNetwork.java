@@ -67,6 +67,11 @@ public final class DataOnlyNetwork implements LocalNetwork {
     }
 
     @Override
+    public boolean knows(NodeRef ref) {
+        return cells.containsKey(ref);
+    }
+
+    @Override
     public void connect(ConnectionInfo connection) {
         throw new UnsupportedOperationException(connection + " needs a Relation; this host holds Datas only");
     }

@@ -33,6 +33,10 @@ public final class DeploymentPlan {
         }
     }
 
+    /** A connection made on a host, with the module that declares it. */
+    public record PlacedConnection(String module, ConnectionInfo connection) {
+    }
+
     /** A stand-in of {@code data} on a host; the Data itself lives on {@code homeHost}. */
     public record StandIn(NodeRef data, NodeInfo node, String homeHost) {
     }
@@ -49,7 +53,7 @@ public final class DeploymentPlan {
     public static final class HostShare {
         final List<Placed> nodes = new ArrayList<>();
         final Map<NodeRef, StandIn> standIns = new LinkedHashMap<>();
-        final List<ConnectionInfo> connections = new ArrayList<>();
+        final List<PlacedConnection> connections = new ArrayList<>();
 
         public List<Placed> nodes() {
             return nodes;
@@ -59,8 +63,16 @@ public final class DeploymentPlan {
             return List.copyOf(standIns.values());
         }
 
-        public List<ConnectionInfo> connections() {
+        public List<PlacedConnection> connections() {
             return connections;
+        }
+
+        /** Modules with nodes or connections on this host, in network order. */
+        public List<String> modules() {
+            Set<String> m = new LinkedHashSet<>();
+            nodes.forEach(p -> m.add(p.module()));
+            connections.forEach(c -> m.add(c.module()));
+            return List.copyOf(m);
         }
     }
 
@@ -96,7 +108,7 @@ public final class DeploymentPlan {
                 if (!c.exists() || dataHost == null || relationHost == null) {
                     continue; // not made at start, or an end's module is not loaded
                 }
-                plan.share(relationHost).connections.add(c);
+                plan.share(relationHost).connections.add(new PlacedConnection(m.name(), c));
                 if (dataHost.equals(relationHost)) {
                     continue;
                 }

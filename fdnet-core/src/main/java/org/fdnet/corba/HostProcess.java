@@ -9,7 +9,7 @@ import org.slf4j.LoggerFactory;
 /**
  * One running FDNet host: an ORB, the {@link HostServant} over a {@link LocalNetwork}, and its name in the
  * naming service. {@code fdnet host} runs one per process; the benchmark and tests may run one in-process.
- * {@link #close()} unregisters the name (when it is still ours), stops the links and the ORB.
+ * {@link #close()} unregisters the name (when it is still ours), stops the links, the ORB and the engine.
  */
 public final class HostProcess implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(HostProcess.class);
@@ -19,8 +19,11 @@ public final class HostProcess implements AutoCloseable {
     private final Host reference;
     private final HostDirectory directory;
     private final String name;
+    private final LocalNetwork network;
 
-    private HostProcess(OrbRuntime orb, HostServant servant, Host reference, HostDirectory directory, String name) {
+    private HostProcess(OrbRuntime orb, HostServant servant, Host reference, HostDirectory directory, String name,
+                        LocalNetwork network) {
+        this.network = network;
         this.orb = orb;
         this.servant = servant;
         this.reference = reference;
@@ -42,7 +45,7 @@ public final class HostProcess implements AutoCloseable {
             HostDirectory directory = HostDirectory.connect(orb);
             directory.register(name, ref);
             LOG.info("host {} registered in {}", name, directory.where());
-            return new HostProcess(orb, servant, ref, directory, name);
+            return new HostProcess(orb, servant, ref, directory, name, network);
         } catch (RuntimeException e) {
             orb.close();
             throw e;
@@ -75,5 +78,16 @@ public final class HostProcess implements AutoCloseable {
         }
         servant.close();
         orb.close();
+        if (network instanceof AutoCloseable engine) {
+            try {
+                engine.close();
+            } catch (Exception e) {
+                LOG.warn("host {}: its engine did not stop cleanly: {}", name, e.toString(), e);
+            }
+        }
+    }
+
+    public LocalNetwork network() {
+        return network;
     }
 }

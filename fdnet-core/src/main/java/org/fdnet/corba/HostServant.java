@@ -108,8 +108,8 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     @Override
     public void connect(ConnectionSpec spec) throws UnknownNode, Refused {
         ConnectionInfo c = IdlMapping.connection(spec);
-        requireNode(spec.data);
-        requireNode(spec.relation);
+        requireKnown(spec.data);
+        requireKnown(spec.relation);
         refuseOnError(c.relation(), () -> network.connect(c));
         notifier.publish(ChangeKind.CONNECTED, c.toString());
     }
@@ -117,8 +117,8 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     @Override
     public void disconnect(ConnectionSpec spec) throws UnknownNode {
         ConnectionInfo c = IdlMapping.connection(spec);
-        requireNode(spec.data);
-        requireNode(spec.relation);
+        requireKnown(spec.data);
+        requireKnown(spec.relation);
         network.disconnect(c);
         notifier.publish(ChangeKind.DISCONNECTED, c.toString());
     }
@@ -142,27 +142,28 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void loadModule(String moduleName, NodeSpec[] nodes, ConnectionSpec[] connections) throws Refused {
-        List<NodeId> created = new ArrayList<>();
-        try {
-            for (NodeSpec spec : nodes) {
-                createNode(spec);
-                created.add(spec.id);
+        List<NodeInfo> infos = new ArrayList<>();
+        for (NodeSpec spec : nodes) {
+            NodeInfo node = IdlMapping.node(spec, hostName);
+            String refusal = policy.refusal(node);
+            if (refusal != null) {
+                LOG.warn("refused to load module {}: {}", moduleName, refusal);
+                throw new Refused("module " + moduleName + " not loaded on " + hostName + ": " + refusal);
             }
-            for (ConnectionSpec c : connections) {
-                connect(c);
-            }
-        } catch (Refused | UnknownNode e) {
-            for (NodeId id : created) {
-                try {
-                    destroyNode(id);
-                } catch (UnknownNode gone) {
-                    LOG.debug("{} already gone while undoing module {}", IdlMapping.ref(id), moduleName);
-                }
-            }
-            String why = e instanceof Refused r ? r.reason : "unknown node " + IdlMapping.ref(((UnknownNode) e).id);
-            throw new Refused("module " + moduleName + " not loaded on " + hostName + ": " + why);
+            infos.add(node);
         }
-        notifier.publish(ChangeKind.MODULE_LOADED, moduleName);
+        List<ConnectionInfo> conns = new ArrayList<>();
+        for (ConnectionSpec c : connections) {
+            conns.add(IdlMapping.connection(c));
+        }
+        try {
+            network.load(moduleName, infos, conns);
+        } catch (RuntimeException e) {
+            LOG.warn("module {} not loaded: {}", moduleName, e.toString());
+            throw new Refused("module " + moduleName + " not loaded on " + hostName + ": " + e.getMessage());
+        }
+        notifier.publish(ChangeKind.MODULE_LOADED, moduleName + " (" + infos.size() + " nodes, "
+                + conns.size() + " connections)");
     }
 
     @Override
@@ -282,6 +283,12 @@ public final class HostServant extends HostPOA implements AutoCloseable {
             LOG.warn("could not stop observing {}: {}", f.source, e.toString(), e);
         }
         f.link.close();
+    }
+
+    private void requireKnown(NodeId id) throws UnknownNode {
+        if (!network.knows(IdlMapping.ref(id))) {
+            throw new UnknownNode(id);
+        }
     }
 
     private void requireNode(NodeId id) throws UnknownNode {

@@ -18,13 +18,36 @@ public interface LocalNetwork {
     /** Instantiates {@code node} as {@code ref}; the host has already checked that its class is allowed. */
     void create(NodeRef ref, NodeInfo node);
 
+    /**
+     * Creates {@code nodes} of {@code module} and makes {@code connections} (declared in that module) as
+     * one change: a Relation starts with its connections in place. All or nothing.
+     */
+    default void load(String module, List<NodeInfo> nodes, List<ConnectionInfo> connections) {
+        List<NodeRef> created = new java.util.ArrayList<>();
+        try {
+            for (NodeInfo n : nodes) {
+                NodeRef ref = new NodeRef(module, n.name());
+                create(ref, n);
+                created.add(ref);
+            }
+            connections.forEach(this::connect);
+        } catch (RuntimeException e) {
+            created.forEach(this::destroy);
+            throw e;
+        }
+    }
+
     /** Creates the local shadow of a Data that lives on another host; it holds values, loads no class. */
     void createStandIn(NodeRef ref, NodeInfo node);
 
     /** @throws java.util.NoSuchElementException when there is no such node */
     void destroy(NodeRef ref);
 
+    /** The nodes running here, stand-ins included. */
     List<NodeRef> nodes();
+
+    /** Whether {@code ref} is declared here: running, or a stand-in waiting for a local connection. */
+    boolean knows(NodeRef ref);
 
     /** Joins two local nodes (either may be a stand-in). */
     void connect(ConnectionInfo connection);

@@ -11,6 +11,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Collectors;
+import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.Host;
 import org.fdnet.corba.idl.NodeSpec;
 import org.fdnet.corba.idl.Refused;
@@ -19,7 +20,6 @@ import org.fdnet.event.EventClock;
 import org.fdnet.event.EventSink;
 import org.fdnet.event.NetworkCommand;
 import org.fdnet.event.NetworkCommandEvent;
-import org.fdnet.netinfo.ConnectionInfo;
 import org.omg.CORBA.SystemException;
 import org.omg.CORBA.UserException;
 import org.slf4j.Logger;
@@ -30,7 +30,7 @@ import org.slf4j.LoggerFactory;
  * share of a {@link DeploymentPlan}, opens the links, then watches the hosts.
  *
  * <pre>
- *   deploy:  per host: loadModule(its nodes) → createStandIn(remote Datas its Relations touch) → connect
+ *   deploy:  per host: createStandIn(remote Datas its Relations touch) → loadModule(nodes + connections)
  *            per link: receiver.acceptLink → sender.forward (batched, windowed, in order)
  *   watch:   every pingMillis: host.ping()
  *            fails          → host LOST: its links BROKEN (listener + NetworkCommandEvent disconnect/link)
@@ -121,24 +121,20 @@ public final class NetworkDeployment implements AutoCloseable {
 
     private void deployShare(String hostName, Host host) throws DeploymentException {
         DeploymentPlan.HostShare share = plan.shareOf(hostName);
-        Map<String, List<NodeSpec>> byModule = new LinkedHashMap<>();
-        for (DeploymentPlan.Placed p : share.nodes()) {
-            byModule.computeIfAbsent(p.module(), m -> new ArrayList<>()).add(IdlMapping.spec(p.module(), p.node()));
-        }
         try {
-            for (Map.Entry<String, List<NodeSpec>> e : byModule.entrySet()) {
-                host.loadModule(e.getKey(), e.getValue().toArray(NodeSpec[]::new), new org.fdnet.corba.idl.ConnectionSpec[0]);
-            }
             for (DeploymentPlan.StandIn s : share.standIns()) {
                 host.createStandIn(IdlMapping.spec(s.data().module(), s.node()), s.homeHost());
             }
-            for (ConnectionInfo c : share.connections()) {
-                host.connect(IdlMapping.spec(c));
+            // One loadModule per module: its Relations start with their connections in place.
+            for (String module : share.modules()) {
+                NodeSpec[] nodes = share.nodes().stream().filter(p -> p.module().equals(module))
+                        .map(p -> IdlMapping.spec(module, p.node())).toArray(NodeSpec[]::new);
+                ConnectionSpec[] connections = share.connections().stream().filter(c -> c.module().equals(module))
+                        .map(c -> IdlMapping.spec(c.connection())).toArray(ConnectionSpec[]::new);
+                host.loadModule(module, nodes, connections);
             }
         } catch (Refused e) {
             throw new DeploymentException("host '" + hostName + "' refused its share: " + e.reason, e);
-        } catch (UnknownNode e) {
-            throw new DeploymentException("host '" + hostName + "' does not know node " + IdlMapping.ref(e.id), e);
         } catch (SystemException e) {
             throw new DeploymentException("host '" + hostName + "' failed while its share was set up: " + e, e);
         }

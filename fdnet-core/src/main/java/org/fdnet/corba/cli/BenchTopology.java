@@ -2,49 +2,54 @@ package org.fdnet.corba.cli;
 
 import java.util.List;
 import org.fdnet.corba.ClassPolicy;
-import org.fdnet.corba.DataOnlyNetwork;
 import org.fdnet.corba.FdnetChildProcess;
 import org.fdnet.corba.HostDirectory;
 import org.fdnet.corba.HostProcess;
 import org.fdnet.corba.IdlMapping;
 import org.fdnet.corba.LinkSettings;
 import org.fdnet.corba.LocalNetwork;
+import org.fdnet.corba.LocalNetworks;
 import org.fdnet.corba.NamingService;
 import org.fdnet.corba.OrbSettings;
-import org.fdnet.corba.OutboundLink;
+import org.fdnet.corba.bench.HopStamp;
+import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.Host;
+import org.fdnet.corba.idl.NodeSpec;
+import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.NodeInfo;
+import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 
 /**
- * The three hosts of {@code fdnet bench corba}, wired with the same Host operations {@code fdnet run} uses:
+ * The hosts of {@code fdnet bench corba}, wired with the same Host operations {@code fdnet run} uses. Each
+ * host runs the single-host engine; bench-b is a separate JVM.
  *
  * <pre>
- *   bench-a (this JVM)            bench-b (child JVM)            bench-probe (this JVM)
- *   Data bench/src ──link 1──▶ stand-in bench/src ──link 2──▶ stand-in bench/out ──▶ observer
+ *   bench-a (this JVM)          bench-b (child JVM)                               bench-probe (this JVM)
+ *   Data ping  ──link 1──▶ stand-in ping ─Reader─▶ Relation stamp ─Writer─▶ Data hop ──link 2──▶ Data hop
+ *   Data seq   ──link 3──▶ stand-in seq  ─────────────────────────────────────────────link 4──▶ Data seq
  * </pre>
  *
- * A value written on bench-a crosses to another process and comes back to the observer: two host
- * boundaries, as a request and its reply cross two in the bare two-way call.
+ * The hop: a value written into bench-a's {@code ping} (its {@code nanoTime}) reaches the Relation
+ * {@code stamp} on bench-b, which writes the one-way time into bench-b's Data {@code hop}. The rate: every
+ * value of {@code seq} crosses to bench-b's Data and on to the probe, where order and count are checked.
  */
 final class BenchTopology implements AutoCloseable {
-    private static final NodeRef SRC = new NodeRef("bench", "src");
-    private static final NodeRef OUT = new NodeRef("bench", "out");
+    private static final String M = "bench";
+    private static final NodeRef PING = new NodeRef(M, "ping");
+    private static final NodeRef STAMP = new NodeRef(M, "stamp");
+    private static final NodeRef HOP = new NodeRef(M, "hop");
+    private static final NodeRef SEQ = new NodeRef(M, "seq");
 
     private final FdnetChildProcess child;
     private final HostProcess a;
     private final HostProcess probe;
-    private final LocalNetwork aNetwork;
-    private final LocalNetwork probeNetwork;
     private final Host b;
 
-    private BenchTopology(FdnetChildProcess child, HostProcess a, LocalNetwork aNetwork, HostProcess probe,
-                          LocalNetwork probeNetwork, Host b) {
+    private BenchTopology(FdnetChildProcess child, HostProcess a, HostProcess probe, Host b) {
         this.child = child;
         this.a = a;
-        this.aNetwork = aNetwork;
         this.probe = probe;
-        this.probeNetwork = probeNetwork;
         this.b = b;
     }
 
@@ -57,14 +62,14 @@ final class BenchTopology implements AutoCloseable {
         HostProcess probe = null;
         try {
             OrbSettings settings = OrbSettings.defaults().withNaming(corbaloc);
-            LocalNetwork aNetwork = new DataOnlyNetwork();
-            LocalNetwork probeNetwork = new DataOnlyNetwork();
-            a = HostProcess.start("bench-a", settings, aNetwork, new ClassPolicy(List.of()), links);
-            probe = HostProcess.start("bench-probe", settings, probeNetwork, new ClassPolicy(List.of()), links);
+            a = HostProcess.start("bench-a", settings, LocalNetworks.forHost("bench-a", List.of()),
+                    new ClassPolicy(List.of()), links);
+            probe = HostProcess.start("bench-probe", settings, LocalNetworks.forHost("bench-probe", List.of()),
+                    new ClassPolicy(List.of()), links);
             Host b = HostDirectory.connect(a.orb()).find("bench-b")
                     .orElseThrow(() -> new IllegalStateException("bench-b did not register"));
             wire(a.reference(), b, probe.reference(), links.window());
-            return new BenchTopology(child, a, aNetwork, probe, probeNetwork, b);
+            return new BenchTopology(child, a, probe, b);
         } catch (RuntimeException | org.omg.CORBA.UserException e) {
             if (probe != null) {
                 probe.close();
@@ -73,39 +78,70 @@ final class BenchTopology implements AutoCloseable {
                 a.close();
             }
             child.close();
-            throw new IllegalStateException("cannot set up the benchmark: " + e, e);
+            throw new IllegalStateException("cannot set up the benchmark: " + describe(e), e);
         }
     }
 
+    private static String describe(Exception e) {
+        return e instanceof org.fdnet.corba.idl.Refused r ? "refused: " + r.reason : e.toString();
+    }
+
     private static void wire(Host a, Host b, Host probe, int window) throws org.omg.CORBA.UserException {
-        a.createNode(IdlMapping.spec(SRC.module(), NodeInfo.data(SRC.node(), "org.fdnet.bench.LongData")));
-        b.createStandIn(IdlMapping.spec(SRC.module(), NodeInfo.data(SRC.node(), "org.fdnet.bench.LongData")), "bench-a");
-        probe.createNode(IdlMapping.spec(OUT.module(), NodeInfo.data(OUT.node(), "org.fdnet.bench.LongData")));
-        b.acceptLink(1, IdlMapping.id(SRC), "bench-a");
-        a.forward(1, IdlMapping.id(SRC), b, "bench-b", window);
-        probe.acceptLink(2, IdlMapping.id(OUT), "bench-b");
-        b.forward(2, IdlMapping.id(SRC), probe, "bench-probe", window);
+        a.createNode(IdlMapping.spec(M, longData(PING)));
+        a.createNode(IdlMapping.spec(M, longData(SEQ)));
+        b.createStandIn(IdlMapping.spec(M, longData(PING)), "bench-a");
+        b.createStandIn(IdlMapping.spec(M, longData(SEQ)), "bench-a");
+        // seq needs a reader on bench-b for its stand-in to exist: the hop's Relation reads it too and
+        // ignores it (it measures input 0 only).
+        b.loadModule(M, new NodeSpec[] {
+            IdlMapping.spec(M, new NodeInfo(NodeKind.RELATION, STAMP.node(), "", "", HopStamp.class.getName(), List.of())),
+            IdlMapping.spec(M, longData(HOP))}, new ConnectionSpec[] {
+                IdlMapping.spec(ConnectionInfo.reader(PING, STAMP)),
+                IdlMapping.spec(ConnectionInfo.writer(STAMP, HOP)),
+                IdlMapping.spec(ConnectionInfo.reader(SEQ, STAMP))});
+        probe.createNode(IdlMapping.spec(M, longData(HOP)));
+        probe.createNode(IdlMapping.spec(M, longData(SEQ)));
+        link(1, PING, a, "bench-a", b, "bench-b", window);
+        link(2, HOP, b, "bench-b", probe, "bench-probe", window);
+        link(3, SEQ, a, "bench-a", b, "bench-b", window);
+        link(4, SEQ, b, "bench-b", probe, "bench-probe", window);
+    }
+
+    private static void link(long id, NodeRef data, Host from, String fromName, Host to, String toName, int window)
+            throws org.omg.CORBA.UserException {
+        to.acceptLink(id, IdlMapping.id(data), fromName);
+        from.forward(id, IdlMapping.id(data), to, toName, window);
+    }
+
+    private static NodeInfo longData(NodeRef ref) {
+        return new NodeInfo(NodeKind.DATA, ref.node(), "", "", "LongData", List.of());
     }
 
     Host remoteHost() {
         return b;
     }
 
-    /** A local write on bench-a, as a sensor or Relation there would make it. */
-    void write(long value) {
-        aNetwork.write(SRC, value);
+    /** Writes the hop probe (its value: now, in nanoTime) on bench-a, as a sensor there would. */
+    void writePing(long nanoTime) {
+        a.network().write(PING, nanoTime);
     }
 
-    AutoCloseable observeArrivals(LocalNetwork.ValueObserver observer) {
-        return probeNetwork.observe(OUT, observer);
+    /** Writes one value of the rate stream on bench-a. */
+    void writeSeq(long value) {
+        a.network().write(SEQ, value);
     }
 
-    String hopPath() {
-        return "write on A -> Data on B -> back on A";
+    /** Sees each one-way hop time (ns) as bench-b's Data {@code hop} reaches the probe. */
+    AutoCloseable observeHops(LocalNetwork.ValueObserver observer) {
+        return probe.network().observe(HOP, observer);
+    }
+
+    AutoCloseable observeSeq(LocalNetwork.ValueObserver observer) {
+        return probe.network().observe(SEQ, observer);
     }
 
     String describe() {
-        return "bench-a:bench/src -> bench-b:bench/src -> bench-probe:bench/out";
+        return "bench-a:ping -> bench-b:stamp -> bench-b:hop -> bench-probe; bench-a:seq -> bench-b:seq -> bench-probe";
     }
 
     String[] linkReport() {

@@ -42,7 +42,7 @@ public final class CorbaBenchmark implements Runnable {
         try (BenchTopology topology = BenchTopology.start(links)) {
             System.out.println("topology: " + topology.describe());
             Histogram bare = measureBare(topology);
-            Histogram hop = measureHop(topology);
+            HopResult hop = measureHop(topology);
             RateResult rate = measureRate(topology);
             print(bare, hop, rate, topology);
         }
@@ -61,33 +61,36 @@ public final class CorbaBenchmark implements Runnable {
         return h;
     }
 
-    private Histogram measureHop(BenchTopology t) {
-        BlockingQueue<Long> arrivals = new ArrayBlockingQueue<>(16);
-        long[] expected = {-1};
-        AutoCloseable observation = t.observeArrivals((value, origin) -> {
-            if (value instanceof Long v && v == expected[0]) {
-                arrivals.offer(System.nanoTime());
+    private record HopResult(Histogram oneWay, Histogram loop) {
+    }
+
+    /** One sample at a time: write on A, wait until B's hop Data (the one-way time) reaches the probe. */
+    private HopResult measureHop(BenchTopology t) {
+        BlockingQueue<long[]> arrivals = new ArrayBlockingQueue<>(16);
+        AutoCloseable observation = t.observeHops((value, origin) -> {
+            if (value instanceof Long oneWay && oneWay > 0) {
+                arrivals.offer(new long[] {oneWay, System.nanoTime()});
             }
         });
-        Histogram h = histogram();
+        Histogram oneWay = histogram();
+        Histogram loop = histogram();
         try (observation) {
             for (int i = 0; i < warmup + samples; i++) {
-                long v = -(i + 2L); // negative: never confused with the rate run's values
-                expected[0] = v;
                 long t0 = System.nanoTime();
-                t.write(v);
-                Long t1 = arrivals.poll(10, TimeUnit.SECONDS);
-                if (t1 == null) {
-                    throw new IllegalStateException("hop sample " + i + " did not arrive within 10 s");
+                t.writePing(t0);
+                long[] arrival = arrivals.poll(10, TimeUnit.SECONDS);
+                if (arrival == null) {
+                    throw new IllegalStateException("hop sample " + i + " did not come back within 10 s");
                 }
                 if (i >= warmup) {
-                    h.recordValue(t1 - t0);
+                    oneWay.recordValue(arrival[0]);
+                    loop.recordValue(arrival[1] - t0);
                 }
             }
         } catch (Exception e) {
             throw new IllegalStateException("hop measurement failed: " + e.getMessage(), e);
         }
-        return h;
+        return new HopResult(oneWay, loop);
     }
 
     private record RateResult(long sent, long received, boolean inOrder, double seconds) {
@@ -99,7 +102,7 @@ public final class CorbaBenchmark implements Runnable {
     private RateResult measureRate(BenchTopology t) {
         long[] state = {0, 0, 1}; // next expected, last arrival nanos, in order (1/0)
         Object done = new Object();
-        AutoCloseable observation = t.observeArrivals((value, origin) -> {
+        AutoCloseable observation = t.observeSeq((value, origin) -> {
             if (value instanceof Long v && v >= 0) {
                 synchronized (done) {
                     if (v != state[0]) {
@@ -116,7 +119,7 @@ public final class CorbaBenchmark implements Runnable {
         try (observation) {
             long start = System.nanoTime();
             for (long i = 0; i < events; i++) {
-                t.write(i);
+                t.writeSeq(i);
             }
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
             synchronized (done) {
@@ -130,15 +133,21 @@ public final class CorbaBenchmark implements Runnable {
         }
     }
 
-    private void print(Histogram bare, Histogram hop, RateResult rate, BenchTopology t) {
+    private void print(Histogram bare, HopResult hopResult, RateResult rate, BenchTopology t) {
+        Histogram hop = hopResult.oneWay();
         double bareP50 = bare.getValueAtPercentile(50) / 1000.0;
         double hopP50 = hop.getValueAtPercentile(50) / 1000.0;
         System.out.println();
         System.out.printf("%-46s p50 %8.1f us   p99 %8.1f us   (%d samples)%n", "bare JacORB two-way call (baseline):",
                 bareP50, bare.getValueAtPercentile(99) / 1000.0, bare.getTotalCount());
-        System.out.printf("%-46s p50 %8.1f us   p99 %8.1f us   (%d samples)%n", "FDNet cross-host hop (" + t.hopPath() + "):",
-                hopP50, hop.getValueAtPercentile(99) / 1000.0, hop.getTotalCount());
+        System.out.printf("%-46s p50 %8.1f us   p99 %8.1f us   (%d samples)%n",
+                "FDNet hop: Data on A -> Relation -> Data on B:", hopP50, hop.getValueAtPercentile(99) / 1000.0,
+                hop.getTotalCount());
         System.out.printf("%-46s %.2f x the bare call (target <= 1.3)%n", "hop p50 / bare p50:", hopP50 / bareP50);
+        Histogram loop = hopResult.loop();
+        System.out.printf("%-46s p50 %8.1f us   p99 %8.1f us   (%.2f x the bare call)%n",
+                "  and on to an observer back on A (2 hops):", loop.getValueAtPercentile(50) / 1000.0,
+                loop.getValueAtPercentile(99) / 1000.0, loop.getValueAtPercentile(50) / 1000.0 / bareP50);
         long lost = rate.sent() - rate.received();
         System.out.printf("%-46s %,.0f events/s; %,d sent, %,d received, %,d lost, %s (target >= 200,000/s)%n",
                 "sustained cross-host rate:", rate.perSecond(), rate.sent(), rate.received(), lost,

@@ -29,7 +29,7 @@ public final class HostCommand implements Runnable {
 
     @Override
     public void run() {
-        HostProcess host = HostProcess.start(name, naming.orbSettings().withPort(port), LocalNetworks.forHost(name),
+        HostProcess host = HostProcess.start(name, naming.orbSettings().withPort(port), LocalNetworks.forHost(name, allowedPaths),
                 new ClassPolicy(allowedPaths), LinkSettings.defaults());
         Runtime.getRuntime().addShutdownHook(new Thread(host::close, "fdnet-host-shutdown"));
         System.out.println("fdnet host " + name + " ready (naming " + naming.corbaloc() + ")");

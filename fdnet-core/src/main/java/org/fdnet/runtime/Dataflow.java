@@ -162,7 +162,7 @@ final class Dataflow {
 
     private void notifyReaders(DataNode data, RelationNode writer) {
         for (RelationNode r : data.readers) {
-            if (r != writer && r.fireOnInput) {
+            if (r != writer) {
                 request(r);
             }
         }

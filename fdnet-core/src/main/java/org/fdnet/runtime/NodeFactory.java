@@ -54,8 +54,17 @@ final class NodeFactory {
     RelationNode relationNode(int id, NodeRef ref, NodeInfo info, Relation relation) {
         long period = periodOf(ref, info);
         NodeParameters p = NodeParameters.of(ref, info);
-        boolean onInput = p.booleanValue("onInput", period == 0);
-        return new RelationNode(id, ref, info, relation, period, onInput, flow);
+        boolean onInput = p.booleanValue("onInput", period == 0 || p.has("triggers"));
+        java.util.Set<String> triggers = null;
+        if (p.has("triggers")) {
+            triggers = new java.util.HashSet<>();
+            for (String t : p.text("triggers").split(",")) {
+                if (!t.isBlank()) {
+                    triggers.add(t.strip());
+                }
+            }
+        }
+        return new RelationNode(id, ref, info, relation, period, onInput, triggers, flow);
     }
 
     /** The {@code period} parameter in milliseconds, 0 when absent. */

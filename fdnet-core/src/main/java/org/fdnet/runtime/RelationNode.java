@@ -37,6 +37,8 @@ final class RelationNode {
     final long periodMillis;
     /** Whether a change of an input makes it fire (else only its period does). */
     final boolean fireOnInput;
+    /** The inputs whose changes make it fire (node names or Module/Node), or {@code null} for all. */
+    final java.util.Set<String> triggers;
     final AtomicInteger state = new AtomicInteger(IDLE);
     final AtomicBoolean periodDue = new AtomicBoolean();
     private final FiringContext context;
@@ -54,7 +56,8 @@ final class RelationNode {
     String reportedState;
 
     RelationNode(int id, NodeRef ref, NodeInfo info, Relation relation, long periodMillis, boolean fireOnInput,
-                 Dataflow flow) {
+                 java.util.Set<String> triggers, Dataflow flow) {
+        this.triggers = triggers;
         this.id = id;
         this.ref = ref;
         this.info = info;
@@ -132,6 +135,11 @@ final class RelationNode {
         } catch (RuntimeException e) {
             LOG.warn("{}: close after failure failed", ref, e);
         }
+    }
+
+    /** Whether a new value of {@code data} makes this Relation fire. */
+    boolean triggeredBy(NodeRef data) {
+        return fireOnInput && (triggers == null || triggers.contains(data.node()) || triggers.contains(data.toString()));
     }
 
     RelationState state() {

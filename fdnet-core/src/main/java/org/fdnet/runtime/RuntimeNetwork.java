@@ -424,7 +424,7 @@ public final class RuntimeNetwork implements AutoCloseable {
                 if (l.kind() == ConnectionKind.READER) {
                     inRefs.add(l.data());
                     ins.add(d);
-                    if (d != null) {
+                    if (d != null && r.triggeredBy(l.data())) {
                         readersOf.computeIfAbsent(l.data(), k -> new ArrayList<>()).add(r);
                     }
                 } else {
@@ -535,11 +535,11 @@ public final class RuntimeNetwork implements AutoCloseable {
     // ------------------------------------------------------------------ queries for the controller
 
     Set<String> loaded() {
-        return readDefinition(d -> Set.copyOf(loaded));
+        return readDefinition(d -> java.util.Collections.unmodifiableSet(new LinkedHashSet<>(loaded)));
     }
 
     Set<String> held() {
-        return readDefinition(d -> Set.copyOf(held));
+        return readDefinition(d -> java.util.Collections.unmodifiableSet(new LinkedHashSet<>(held)));
     }
 
     DataNode dataNode(NodeRef ref) {

@@ -37,12 +37,18 @@ final class TestNetworks {
         return ps;
     }
 
+    /** A Reader declared by {@code module}; bare names mean the module's node, else main's (as in files). */
     static void read(NetworkInfo n, String module, String data, String relation) {
-        n.addConnection(module, ConnectionInfo.reader(NodeRef.parse(data, module), NodeRef.parse(relation, module)));
+        n.addConnection(module, ConnectionInfo.reader(resolve(n, module, data), resolve(n, module, relation)));
     }
 
     static void write(NetworkInfo n, String module, String relation, String data) {
-        n.addConnection(module, ConnectionInfo.writer(NodeRef.parse(relation, module), NodeRef.parse(data, module)));
+        n.addConnection(module, ConnectionInfo.writer(resolve(n, module, relation), resolve(n, module, data)));
+    }
+
+    private static NodeRef resolve(NetworkInfo n, String module, String name) {
+        NodeRef r = n.resolve(module, name);
+        return r != null ? r : NodeRef.parse(name, module);
     }
 
     /** Options for tests: test classes (in org.fdnet.runtime) count as built in. */

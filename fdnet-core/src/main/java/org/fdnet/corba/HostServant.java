@@ -44,6 +44,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     private final ChangeNotifier notifier;
     private final Map<Long, InboundLink> inbound = new ConcurrentHashMap<>();
     private final Map<Long, Forwarding> outbound = new ConcurrentHashMap<>();
+    private final java.util.concurrent.atomic.AtomicLong retiredReceived = new java.util.concurrent.atomic.AtomicLong();
 
     private record Forwarding(OutboundLink link, NodeRef source, AutoCloseable observation) {
     }
@@ -184,7 +185,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     @Override
     public void acceptLink(long link, NodeId target, String fromHost) throws UnknownNode {
         requireNode(target);
-        inbound.put(link, new InboundLink(link, IdlMapping.ref(target), fromHost, network));
+        retire(inbound.put(link, new InboundLink(link, IdlMapping.ref(target), fromHost, network)));
         notifier.publish(ChangeKind.LINK_OPENED, "link " + link + " from " + fromHost + " into " + IdlMapping.ref(target));
     }
 
@@ -232,6 +233,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     @Override
     public void closeLink(long link) {
         InboundLink in = inbound.remove(link);
+        retire(in);
         Forwarding out = outbound.remove(link);
         if (out != null) {
             stop(out);
@@ -260,13 +262,30 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         notifier.unsubscribe(orb.object_to_string(listener));
     }
 
+    /** Values applied to this host's Datas from links since it started. */
+    public long valuesReceived() {
+        return retiredReceived.get() + inbound.values().stream().mapToLong(InboundLink::applied).sum();
+    }
+
+    private void retire(InboundLink old) {
+        if (old != null) {
+            retiredReceived.addAndGet(old.applied());
+        }
+    }
+
     /** The outbound links of this host, for status and tests. */
     public List<OutboundLink> outboundLinks() {
         return outbound.values().stream().map(Forwarding::link).toList();
     }
 
     private void closeLinksOf(NodeRef ref) {
-        inbound.values().removeIf(in -> in.target().equals(ref));
+        inbound.values().removeIf(in -> {
+            if (in.target().equals(ref)) {
+                retire(in);
+                return true;
+            }
+            return false;
+        });
         outbound.entrySet().removeIf(e -> {
             if (e.getValue().source.equals(ref)) {
                 stop(e.getValue());

@@ -26,7 +26,9 @@ import org.fdnet.runtime.RuntimeOptions;
 import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.runtime.Value;
 import org.fdnet.runtime.loading.ClassLoadingPolicy;
+import org.fdnet.corba.cli.DistributionOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -38,7 +40,8 @@ import picocli.CommandLine.Spec;
  * Exit 0 when it ran, 1 for a bad file or a network that cannot start, 2 for a bad {@code --set}/{@code --load}.
  */
 @Command(name = "run", mixinStandardHelpOptions = true,
-        description = "Run a network locally; print progress each second and a summary at the end.")
+        description = {"Run a network; print progress each second and a summary at the end.",
+                "Nodes whose <host> names another host run there (fdnet host --name H); see docs/distribution.md."})
 public final class RunCommand implements Callable<Integer> {
     @Parameters(paramLabel = "FILE", description = "the .fdn network definition")
     Path file;
@@ -68,6 +71,9 @@ public final class RunCommand implements Callable<Integer> {
     @Option(names = "--trace", description = "print every event as it happens")
     boolean trace;
 
+    @Mixin
+    DistributionOptions distribution;
+
     @Spec
     CommandSpec spec;
 
@@ -84,6 +90,9 @@ public final class RunCommand implements Callable<Integer> {
             return 1;
         }
         EventCounter counter = new EventCounter();
+        if (distribution.appliesTo(definition)) {
+            return distribution.run(file, definition, duration, allowedRoots, sets, counter, out, err);
+        }
         RuntimeOptions options = RuntimeOptions.defaults().sink(counter)
                 .classLoading(ClassLoadingPolicy.forNetworkFile(file, allowedRoots));
         if (workers != null) {

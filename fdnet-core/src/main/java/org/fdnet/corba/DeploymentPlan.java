@@ -41,8 +41,11 @@ public final class DeploymentPlan {
     public record StandIn(NodeRef data, NodeInfo node, String homeHost) {
     }
 
-    /** Values of {@code data} flow from its instance on {@code fromHost} to its instance on {@code toHost}. */
-    public record Link(long id, NodeRef data, String fromHost, String toHost) {
+    /**
+     * Values of {@code data} flow from its instance on {@code fromHost} to its instance on {@code toHost}.
+     * {@code fromDataHome}: a Reader's link, from the Data itself; else a Writer's, into the Data.
+     */
+    public record Link(long id, NodeRef data, String fromHost, String toHost, boolean fromDataHome) {
         @Override
         public String toString() {
             return fromHost + ":" + data + " -> " + toHost + " (link " + id + ")";
@@ -117,7 +120,7 @@ public final class DeploymentPlan {
                 String from = c.kind() == ConnectionKind.READER ? dataHost : relationHost;
                 String to = c.kind() == ConnectionKind.READER ? relationHost : dataHost;
                 linkByKey.computeIfAbsent(from + "|" + to + "|" + c.data(),
-                        k -> new Link(linkByKey.size() + 1L, c.data(), from, to));
+                        k -> new Link(linkByKey.size() + 1L, c.data(), from, to, from.equals(dataHost)));
             }
         }
         plan.links.addAll(linkByKey.values());
@@ -149,11 +152,19 @@ public final class DeploymentPlan {
         return shares.getOrDefault(host, new HostShare());
     }
 
+    /**
+     * Every link, those out of a Data's home first: a value a Writer's link brings into a Data must find
+     * the Reader links out of it already open, or the Readers elsewhere would miss it.
+     */
     public List<Link> links() {
-        return List.copyOf(links);
+        return links.stream().sorted(OPENING_ORDER).toList();
     }
 
+    /** The links with an end on {@code host}, in opening order. */
     public List<Link> linksTouching(String host) {
-        return links.stream().filter(l -> l.fromHost.equals(host) || l.toHost.equals(host)).toList();
+        return links().stream().filter(l -> l.fromHost.equals(host) || l.toHost.equals(host)).toList();
     }
+
+    private static final java.util.Comparator<Link> OPENING_ORDER =
+            java.util.Comparator.comparing((Link l) -> !l.fromDataHome()).thenComparingLong(Link::id);
 }

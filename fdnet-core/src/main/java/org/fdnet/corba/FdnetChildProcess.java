@@ -105,6 +105,18 @@ public final class FdnetChildProcess implements AutoCloseable {
         return List.copyOf(output);
     }
 
+    /** Waits for the process to end by itself; returns its exit code, or -1 if it is still running. */
+    public int awaitExit(long timeoutMillis) {
+        try {
+            if (process.waitFor(timeoutMillis, TimeUnit.MILLISECONDS)) {
+                return process.exitValue();
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        return -1;
+    }
+
     public boolean isAlive() {
         return process.isAlive();
     }

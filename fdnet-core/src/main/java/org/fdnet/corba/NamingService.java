@@ -1,6 +1,9 @@
 package org.fdnet.corba;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.util.ArrayList;
@@ -29,8 +32,9 @@ public final class NamingService {
             throw new IllegalArgumentException("the naming service needs a fixed port (clients must know it)");
         }
         OrbRuntime.prepareJvm();
+        Path state = stateDirectory();
         List<String> args = new ArrayList<>();
-        for (Map.Entry<Object, Object> e : settings.toNamingServerProperties().entrySet()) {
+        for (Map.Entry<Object, Object> e : settings.toNamingServerProperties(state).entrySet()) {
             args.add("-D" + e.getKey() + "=" + e.getValue());
         }
         Thread server = new Thread(() -> org.jacorb.naming.NameServer.main(args.toArray(String[]::new)),
@@ -53,6 +57,24 @@ public final class NamingService {
         }
         throw new IllegalStateException("the naming service did not listen on " + settings.bindAddress() + ":"
                 + settings.port() + " (is the port in use?)");
+    }
+
+    /** A fresh folder for the bindings, removed when the JVM exits: hosts register again after a restart. */
+    private static Path stateDirectory() {
+        try {
+            Path dir = Files.createTempDirectory("fdnet-naming-");
+            Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+                try (var files = Files.list(dir)) {
+                    files.forEach(f -> f.toFile().delete());
+                } catch (IOException e) {
+                    LOG.debug("could not empty {}: {}", dir, e.toString());
+                }
+                dir.toFile().delete();
+            }, "fdnet-naming-cleanup"));
+            return dir;
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot create a folder for the naming service's bindings", e);
+        }
     }
 
     private static void sleep(long millis) {

@@ -39,6 +39,7 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
     private static final String POA_THREADS_MIN = "jacorb.poa.thread_pool_min";
     private static final String NAMING_PRINT_IOR = "jacorb.naming.print_ior";
     private static final String NAMING_KEY = "jacorb.orb.objectKeyMap.NameService";
+    private static final String NAMING_DB_DIR = "jacorb.naming.db_dir";
 
     public OrbSettings {
         Objects.requireNonNull(bindAddress, "bindAddress");
@@ -109,9 +110,13 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
         return p;
     }
 
-    /** The extra properties JacORB's NameServer needs to answer {@code corbaloc::…/NameService}. */
-    public Properties toNamingServerProperties() {
+    /**
+     * The extra properties JacORB's NameServer needs to answer {@code corbaloc::…/NameService}; it keeps
+     * its bindings in {@code stateDirectory} (by default it would write them into the working directory).
+     */
+    public Properties toNamingServerProperties(java.nio.file.Path stateDirectory) {
         Properties p = toOrbProperties();
+        p.setProperty(NAMING_DB_DIR, stateDirectory.toString());
         p.setProperty(NAMING_PRINT_IOR, "false");
         p.setProperty(NAMING_KEY, "StandardNS/NameServer-POA/_root");
         return p;

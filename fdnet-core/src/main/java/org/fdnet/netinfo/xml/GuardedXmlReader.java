@@ -7,7 +7,6 @@ import jakarta.xml.bind.Unmarshaller;
 import jakarta.xml.bind.ValidationEvent;
 import jakarta.xml.bind.ValidationEventLocator;
 import java.io.IOException;
-import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -50,8 +49,12 @@ import org.xml.sax.helpers.XMLFilterImpl;
  * One instance reads one file.
  */
 final class GuardedXmlReader {
+    /** Files are read whole (a network of 10,000 nodes is about 3 MiB); this bounds the memory a file can take. */
+    static final long MAX_FILE_BYTES = 64L * 1024 * 1024;
+
     private final Path file;
     private final BundledDtd dtd;
+    private DoctypeSupplier doctype;
     private final List<Problem> problems = new ArrayList<>();
     private Locator locator;
     private String doctypeSystemId;
@@ -73,7 +76,8 @@ final class GuardedXmlReader {
     }
 
     void add(int line, int column, String message) {
-        problems.add(new Problem(file, line, column, message));
+        int fileColumn = doctype == null ? column : doctype.correctColumn(line, column);
+        problems.add(new Problem(file, line, fileColumn, message));
     }
 
     /** The comments before the root element, which a rewrite keeps. */
@@ -88,7 +92,7 @@ final class GuardedXmlReader {
 
     /** The SYSTEM id of the file's DOCTYPE, or {@code null} when it had none. */
     String doctypeSystemId() {
-        return doctypeSystemId;
+        return doctype != null && doctype.inserted() ? null : doctypeSystemId;
     }
 
     /**
@@ -96,8 +100,15 @@ final class GuardedXmlReader {
      * or cannot be read. A non-null result may still come with validation problems.
      */
     <T> T read(JAXBContext context, Class<T> rootType) {
-        try (InputStream in = Files.newInputStream(file)) {
-            InputSource source = new InputSource(in);
+        try {
+            long size = Files.size(file);
+            if (size > MAX_FILE_BYTES) {
+                add(0, 0, "the file is " + size / (1024 * 1024) + " MiB; FDNet reads files of at most "
+                        + MAX_FILE_BYTES / (1024 * 1024) + " MiB");
+                return null;
+            }
+            doctype = DoctypeSupplier.prepare(Files.readAllBytes(file), dtd);
+            InputSource source = doctype.source();
             source.setSystemId(file.toUri().toString());
             Unmarshaller unmarshaller = context.createUnmarshaller();
             unmarshaller.setEventHandler(this::handle);

@@ -138,10 +138,10 @@ final class NetworkFileReader {
     private ConnectionInfo reader(NetworkInfo network, String module, ReadElement read) {
         NodeRef data = read.dstructure != null
                 ? new NodeRef(module, read.dstructure.name.strip())
-                : resolve(network, module, read.data, ConnectionKind.READER);
+                : resolve(network, module, read, read.data, ConnectionKind.READER);
         NodeRef relation = read.pstructure != null
                 ? new NodeRef(module, read.pstructure.name.strip())
-                : resolve(network, module, read.proc, ConnectionKind.READER);
+                : resolve(network, module, read, read.proc, ConnectionKind.READER);
         if (data == null || relation == null) {
             return null;
         }
@@ -150,22 +150,28 @@ final class NetworkFileReader {
     }
 
     private ConnectionInfo writer(NetworkInfo network, String module, WriteElement write) {
-        NodeRef data = resolve(network, module, write.data, ConnectionKind.WRITER);
-        NodeRef relation = resolve(network, module, write.proc, ConnectionKind.WRITER);
+        NodeRef data = resolve(network, module, write, write.data, ConnectionKind.WRITER);
+        NodeRef relation = resolve(network, module, write, write.proc, ConnectionKind.WRITER);
         if (data == null || relation == null) {
             return null;
         }
         return new ConnectionInfo(ConnectionKind.WRITER, linkName(write), data, relation, exists(write), false, false);
     }
 
-    private NodeRef resolve(NetworkInfo network, String module, LocatedText reference, ConnectionKind kind) {
+    /** JAXB gives no position to a text-only element, so a bad reference is reported at its {@code read}/{@code write}. */
+    private NodeRef resolve(NetworkInfo network, String module, LinkElement link, LocatedText reference, ConnectionKind kind) {
         String text = reference.text.strip();
         NodeRef ref = network.resolve(module, text);
         if (ref == null) {
-            String where = text.indexOf('/') >= 0
-                    ? describeQualified(network, NodeRef.parse(text, module))
-                    : "neither module '" + module + "' nor module 'main' has a node named '" + text + "'";
-            problem(reference, "in module '" + module + "': " + kind.label() + " names '" + text + "', but " + where);
+            String where;
+            if (text.indexOf('/') >= 0) {
+                where = describeQualified(network, NodeRef.parse(text, module));
+            } else if (ModuleInfo.MAIN.equals(module)) {
+                where = "module 'main' has no node named '" + text + "'";
+            } else {
+                where = "neither module '" + module + "' nor module 'main' has a node named '" + text + "'";
+            }
+            problem(link, "in module '" + module + "': " + kind.label() + " names '" + text + "', but " + where);
         }
         return ref;
     }

@@ -111,8 +111,12 @@ final class Dataflow {
             long stamp = commitLock.writeLock();
             try {
                 for (int i = 0; i < values.length; i++) {
-                    if (values[i] != null && outputs[i].alive) {
-                        store(outputs[i], values[i]);
+                    if (values[i] != null) {
+                        if (outputs[i].alive) {
+                            store(outputs[i], values[i]);
+                        } else {
+                            values[i] = null;
+                        }
                     }
                 }
             } finally {
@@ -156,7 +160,10 @@ final class Dataflow {
     private void store(DataNode data, Value prepared) {
         Value stamped = prepared.at(events.clock().next());
         data.store(stamped);
-        events.dataValue(data, stamped);
+        if (!data.standIn) {
+            // a stand-in's values are the remote Data's: its own host logs them
+            events.dataValue(data, stamped);
+        }
         writes.increment();
     }
 

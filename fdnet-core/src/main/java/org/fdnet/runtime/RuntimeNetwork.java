@@ -318,7 +318,7 @@ public final class RuntimeNetwork implements AutoCloseable {
         definition = candidate;
         loaded = loadedNext;
         held = heldNext;
-        rewire(plan, toRequest);
+        Rewiring.apply(relations.values(), datas, links, held, plan, toRequest, events);
         remoteLinks = remoteLinksOf(plan, prepared.brokenStandIns());
     }
 
@@ -403,92 +403,6 @@ public final class RuntimeNetwork implements AutoCloseable {
                 }, node.periodMillis, node.periodMillis, TimeUnit.MILLISECONDS);
             }
             toRequest.add(node);
-        }
-    }
-
-    /** Gives every local Relation its wiring and every Data its readers; reports status changes. */
-    private void rewire(StructurePlan plan, List<RelationNode> toRequest) {
-        Map<NodeRef, List<RelationNode>> readersOf = new HashMap<>();
-        for (RelationNode r : relations.values()) {
-            List<LiveLink> declared = plan.declared.getOrDefault(r.ref, List.of());
-            List<NodeRef> inRefs = new ArrayList<>();
-            List<DataNode> ins = new ArrayList<>();
-            List<NodeRef> outRefs = new ArrayList<>();
-            List<DataNode> outs = new ArrayList<>();
-            List<NodeRef> missing = new ArrayList<>();
-            for (LiveLink l : declared) {
-                DataNode d = links.contains(l) ? datas.get(l.data()) : null;
-                if (d == null) {
-                    missing.add(l.data());
-                }
-                if (l.kind() == ConnectionKind.READER) {
-                    inRefs.add(l.data());
-                    ins.add(d);
-                    if (d != null && r.triggeredBy(l.data())) {
-                        readersOf.computeIfAbsent(l.data(), k -> new ArrayList<>()).add(r);
-                    }
-                } else {
-                    outRefs.add(l.data());
-                    outs.add(d);
-                }
-            }
-            Wiring next = new Wiring(inRefs.toArray(NodeRef[]::new), ins.toArray(DataNode[]::new),
-                    outRefs.toArray(NodeRef[]::new), outs.toArray(DataNode[]::new));
-            Wiring current = r.wiring;
-            if (!sameWiring(current, next)) {
-                r.wiring = next;
-                if (!toRequest.contains(r)) {
-                    toRequest.add(r);
-                }
-            }
-            r.missing = List.copyOf(missing);
-            boolean isHeld = held.contains(r.ref.module());
-            boolean resumed = r.held && !isHeld;
-            r.held = isHeld;
-            if (resumed && r.missedWhileHeld) {
-                r.missedWhileHeld = false;
-                toRequest.add(r);
-            }
-            updateStatus(r);
-        }
-        for (DataNode d : datas.values()) {
-            List<RelationNode> readers = readersOf.getOrDefault(d.ref, List.of());
-            d.readers = readers.toArray(RelationNode[]::new);
-        }
-    }
-
-    private static boolean sameWiring(Wiring a, Wiring b) {
-        return Arrays.equals(a.inputRefs(), b.inputRefs()) && Arrays.equals(a.outputRefs(), b.outputRefs())
-                && identical(a.inputs(), b.inputs()) && identical(a.outputs(), b.outputs());
-    }
-
-    private static boolean identical(DataNode[] a, DataNode[] b) {
-        if (a.length != b.length) {
-            return false;
-        }
-        for (int i = 0; i < a.length; i++) {
-            if (a[i] != b[i]) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    private void updateStatus(RelationNode r) {
-        if (r.status == RelationStatus.FAILED || !r.alive) {
-            return;
-        }
-        RelationStatus next = r.held ? RelationStatus.HELD
-                : r.missing.isEmpty() ? RelationStatus.RUNNING : RelationStatus.WAITING;
-        String before = r.reportedState;
-        r.status = next;
-        String now = r.state().text();
-        if (!now.equals(before)) {
-            r.reportedState = now;
-            if (next == RelationStatus.WAITING) {
-                LOG.info("{} {}", r.ref, now);
-            }
-            events.relationValue(r.id, now);
         }
     }
 

@@ -45,8 +45,8 @@ public final class CoreBenchmark {
         Histogram base = baselineHop();
         // one untimed pass first: the JIT compiles the engine's paths before any figure is taken
         hop(RuntimeOptions.defaults().workerThreads(1).sink(new CountingSink()), hops / 2, warmup);
-        Histogram inline = hop(RuntimeOptions.defaults().workerThreads(1), hops, warmup);
         Histogram events = hop(RuntimeOptions.defaults().workerThreads(1).sink(new CountingSink()), hops, warmup);
+        Histogram inline = hop(RuntimeOptions.defaults().workerThreads(1), hops, warmup);
         Histogram pooled = hop(RuntimeOptions.defaults().workerThreads(1).inlineCallers(false),
                 Math.max(1000, hops / 20), Math.max(1000, warmup / 20));
         print(row, "baseline: plain Java calls", base);

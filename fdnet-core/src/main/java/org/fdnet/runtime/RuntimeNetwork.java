@@ -68,6 +68,7 @@ public final class RuntimeNetwork implements AutoCloseable {
     private volatile boolean closed;
 
     private RuntimeNetwork(NetworkInfo definition, RuntimeOptions options) {
+        options.seal();
         this.options = options;
         this.events = new EventPublisher(options.clock());
         options.sinks().forEach(events::add);

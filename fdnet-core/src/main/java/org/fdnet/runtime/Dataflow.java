@@ -26,6 +26,8 @@ import org.fdnet.runtime.servant.Servants;
  */
 final class Dataflow {
     private final StampedLock commitLock = new StampedLock();
+    /** The thread inside a commit: an observer that writes back would wait on itself forever (the lock is not reentrant). */
+    private volatile Thread committer;
     private final EventPublisher events;
     private Scheduler scheduler;
     private final AtomicInteger busy = new AtomicInteger();
@@ -108,7 +110,7 @@ final class Dataflow {
             if (!any) {
                 return;
             }
-            long stamp = commitLock.writeLock();
+            long stamp = lockForWrite();
             try {
                 for (int i = 0; i < values.length; i++) {
                     if (values[i] != null) {
@@ -120,7 +122,7 @@ final class Dataflow {
                     }
                 }
             } finally {
-                commitLock.unlockWrite(stamp);
+                unlockWrite(stamp);
             }
             for (int i = 0; i < values.length; i++) {
                 if (values[i] != null) {
@@ -135,26 +137,41 @@ final class Dataflow {
     /** One value from outside a firing (controller, sensor) or from a writer of a single Data. */
     void write(DataNode data, Value value, RelationNode writer) {
         Value prepared = data.prepare(value);
-        long stamp = commitLock.writeLock();
+        long stamp = lockForWrite();
         try {
             if (!data.alive) {
                 return;
             }
             store(data, prepared);
         } finally {
-            commitLock.unlockWrite(stamp);
+            unlockWrite(stamp);
         }
         notifyReaders(data, writer);
     }
 
     /** A new Data's first value: stamped and logged, but nobody is told (its readers fire when wired). */
     void initialize(DataNode data, Value first) {
-        long stamp = commitLock.writeLock();
+        long stamp = lockForWrite();
         try {
             store(data, first);
         } finally {
-            commitLock.unlockWrite(stamp);
+            unlockWrite(stamp);
         }
+    }
+
+    private long lockForWrite() {
+        if (committer == Thread.currentThread()) {
+            throw new IllegalStateException("a value observer or event sink wrote to the network while a commit was"
+                    + " telling it of a value; observers and sinks must enqueue and return");
+        }
+        long stamp = commitLock.writeLock();
+        committer = Thread.currentThread();
+        return stamp;
+    }
+
+    private void unlockWrite(long stamp) {
+        committer = null;
+        commitLock.unlockWrite(stamp);
     }
 
     private void store(DataNode data, Value prepared) {

@@ -27,7 +27,7 @@ final class Rewiring {
 
     /** Gives every local Relation its wiring and every Data its readers; reports status changes. */
     static void apply(Collection<RelationNode> relations, Map<NodeRef, DataNode> datas, Set<LiveLink> links,
-                      Set<String> held, StructurePlan plan, List<RelationNode> toRequest, EventPublisher events) {
+                      Set<String> held, StructurePlan plan, Set<RelationNode> toRequest, EventPublisher events) {
         Map<NodeRef, List<RelationNode>> readersOf = new HashMap<>();
         for (RelationNode r : relations) {
             List<LiveLink> declared = plan.declared.getOrDefault(r.ref, List.of());
@@ -57,9 +57,7 @@ final class Rewiring {
             Wiring current = r.wiring;
             if (!sameWiring(current, next)) {
                 r.wiring = next;
-                if (!toRequest.contains(r)) {
-                    toRequest.add(r);
-                }
+                toRequest.add(r);
             }
             r.missing = List.copyOf(missing);
             boolean isHeld = held.contains(r.ref.module());

@@ -149,6 +149,23 @@ public final class RuntimeNetwork implements AutoCloseable {
         events.remove(sink);
     }
 
+    /**
+     * The running instance of a Data, e.g. a {@link SensorData} a driver pushes into; {@code null} when the
+     * Data is not running here. A new instance replaces it when its module reloads or its parameters change.
+     *
+     * @throws IllegalArgumentException when the instance is not a {@code type}
+     */
+    public <T extends Data> T dataInstance(NodeRef ref, Class<T> type) {
+        DataNode d = dataNode(ref);
+        if (d == null) {
+            return null;
+        }
+        if (!type.isInstance(d.data)) {
+            throw new IllegalArgumentException(ref + " is a " + d.data.getClass().getName() + ", not a " + type.getName());
+        }
+        return type.cast(d.data);
+    }
+
     /** Reads the current definition under the structure lock (no copy): for Servants and queries. */
     public <T> T readDefinition(Function<NetworkInfo, T> reader) {
         structure.lock();
@@ -188,7 +205,7 @@ public final class RuntimeNetwork implements AutoCloseable {
      */
     ChangeOutcome change(String description, int source, NetworkEdit edit, Set<String> nextLoaded,
                          Set<String> nextHeld, Set<NodeRef> restart, List<NetworkCommandDraft> moduleCommands) {
-        List<RelationNode> toRequest = new ArrayList<>();
+        Set<RelationNode> toRequest = new LinkedHashSet<>();
         List<SensorData> toStart = new ArrayList<>();
         ChangeOutcome outcome;
         structure.lock();
@@ -290,7 +307,7 @@ public final class RuntimeNetwork implements AutoCloseable {
 
     private void commit(int source, NetworkInfo candidate, Set<String> loadedNext, Set<String> heldNext,
                         StructurePlan plan, Prepared prepared, List<NetworkCommandDraft> moduleCommands,
-                        List<RelationNode> toRequest, List<SensorData> toStart) {
+                        Set<RelationNode> toRequest, List<SensorData> toStart) {
         for (NetworkCommandDraft c : moduleCommands) {
             events.command(source, c.command(), c.module(), "module");
         }
@@ -363,7 +380,7 @@ public final class RuntimeNetwork implements AutoCloseable {
     }
 
     private void createNodes(int source, StructurePlan plan, Prepared prepared, Map<NodeRef, DataNode> removed,
-                             List<RelationNode> toRequest, List<SensorData> toStart) {
+                             Set<RelationNode> toRequest, List<SensorData> toStart) {
         for (Map.Entry<NodeRef, NodeFactory.PreparedData> e : prepared.datas().entrySet()) {
             NodeRef ref = e.getKey();
             boolean standIn = plan.standIns.containsKey(ref);
@@ -380,8 +397,9 @@ public final class RuntimeNetwork implements AutoCloseable {
                     && java.util.Objects.equals(old.info.parameter("initial"), info.parameter("initial"))) {
                 first = old.value;
             }
+            // a stand-in is named (so connection events about it resolve) but never "created": its host creates it
+            events.named(id, NodeKind.DATA, ref);
             if (!standIn) {
-                events.named(id, NodeKind.DATA, ref);
                 events.command(source, NetworkCommand.CREATE, Integer.toString(id), "data");
             }
             flow.initialize(node, first);

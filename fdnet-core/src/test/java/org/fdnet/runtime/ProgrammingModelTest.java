@@ -83,7 +83,7 @@ class ProgrammingModelTest {
             DoubleSensor[] sensor = new DoubleSensor[1];
             // the sensor instance is the one the network made; a device driver would get it the same way
             net.controller().observe(ref("Gyro"), (d, id, v) -> { });
-            sensor[0] = SensorAccess.sensor(net, ref("Gyro"), DoubleSensor.class);
+            sensor[0] = net.dataInstance(ref("Gyro"), DoubleSensor.class);
             sensor[0].push(0.25);
             quiet(net);
             assertThat(net.controller().value(ref("Scaled")).asDouble()).isEqualTo(25.0);

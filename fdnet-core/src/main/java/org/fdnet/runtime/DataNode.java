@@ -30,7 +30,6 @@ final class DataNode implements Data.DataPort {
     volatile RelationNode[] readers = NO_READERS;
     private volatile DataValueObserver[] observers = NO_OBSERVERS;
     volatile boolean alive = true;
-    long writes;
 
     DataNode(int id, NodeRef ref, NodeInfo info, Data data, boolean standIn, Dataflow flow) {
         this.id = id;
@@ -61,7 +60,6 @@ final class DataNode implements Data.DataPort {
     /** Called under the commit lock with a stamped value. */
     void store(Value stamped) {
         value = stamped;
-        writes++;
         for (DataValueObserver o : observers) {
             try {
                 o.valueChanged(ref, id, stamped);
@@ -79,11 +77,6 @@ final class DataNode implements Data.DataPort {
 
     synchronized void removeObserver(DataValueObserver o) {
         observers = Arrays.stream(observers).filter(x -> x != o).toArray(DataValueObserver[]::new);
-    }
-
-    /** Observers move to a Data's new instance when it is re-created with the same name. */
-    DataValueObserver[] observers() {
-        return observers;
     }
 
     @Override

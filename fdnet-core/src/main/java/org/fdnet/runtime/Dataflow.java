@@ -26,6 +26,8 @@ import org.fdnet.runtime.servant.Servants;
  */
 final class Dataflow {
     private final StampedLock commitLock = new StampedLock();
+    /** The thread inside a commit: an observer that writes back would wait on itself forever (the lock is not reentrant). */
+    private volatile Thread committer;
     private final EventPublisher events;
     private Scheduler scheduler;
     private final AtomicInteger busy = new AtomicInteger();
@@ -108,15 +110,19 @@ final class Dataflow {
             if (!any) {
                 return;
             }
-            long stamp = commitLock.writeLock();
+            long stamp = lockForWrite();
             try {
                 for (int i = 0; i < values.length; i++) {
-                    if (values[i] != null && outputs[i].alive) {
-                        store(outputs[i], values[i]);
+                    if (values[i] != null) {
+                        if (outputs[i].alive) {
+                            store(outputs[i], values[i]);
+                        } else {
+                            values[i] = null;
+                        }
                     }
                 }
             } finally {
-                commitLock.unlockWrite(stamp);
+                unlockWrite(stamp);
             }
             for (int i = 0; i < values.length; i++) {
                 if (values[i] != null) {
@@ -131,32 +137,50 @@ final class Dataflow {
     /** One value from outside a firing (controller, sensor) or from a writer of a single Data. */
     void write(DataNode data, Value value, RelationNode writer) {
         Value prepared = data.prepare(value);
-        long stamp = commitLock.writeLock();
+        long stamp = lockForWrite();
         try {
             if (!data.alive) {
                 return;
             }
             store(data, prepared);
         } finally {
-            commitLock.unlockWrite(stamp);
+            unlockWrite(stamp);
         }
         notifyReaders(data, writer);
     }
 
     /** A new Data's first value: stamped and logged, but nobody is told (its readers fire when wired). */
     void initialize(DataNode data, Value first) {
-        long stamp = commitLock.writeLock();
+        long stamp = lockForWrite();
         try {
             store(data, first);
         } finally {
-            commitLock.unlockWrite(stamp);
+            unlockWrite(stamp);
         }
+    }
+
+    private long lockForWrite() {
+        if (committer == Thread.currentThread()) {
+            throw new IllegalStateException("a value observer or event sink wrote to the network while a commit was"
+                    + " telling it of a value; observers and sinks must enqueue and return");
+        }
+        long stamp = commitLock.writeLock();
+        committer = Thread.currentThread();
+        return stamp;
+    }
+
+    private void unlockWrite(long stamp) {
+        committer = null;
+        commitLock.unlockWrite(stamp);
     }
 
     private void store(DataNode data, Value prepared) {
         Value stamped = prepared.at(events.clock().next());
         data.store(stamped);
-        events.dataValue(data, stamped);
+        if (!data.standIn) {
+            // a stand-in's values are the remote Data's: its own host logs them
+            events.dataValue(data, stamped);
+        }
         writes.increment();
     }
 

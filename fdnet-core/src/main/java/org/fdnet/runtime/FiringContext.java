@@ -64,12 +64,19 @@ final class FiringContext implements RelationContext {
 
     @Override
     public NodeRef inputRef(int index) {
-        return wiring.inputRefs()[index];
+        return wiring.inputRefs()[checkInput(index)];
     }
 
     @Override
     public Value input(int index) {
-        return in[index];
+        return in[checkInput(index)];
+    }
+
+    private int checkInput(int index) {
+        if (index < 0 || index >= in.length) {
+            throw new IllegalArgumentException(node.ref + " has no input " + index + " (it reads " + in.length + ")");
+        }
+        return index;
     }
 
     @Override
@@ -88,6 +95,7 @@ final class FiringContext implements RelationContext {
 
     @Override
     public boolean inputChanged(int index) {
+        checkInput(index);
         return in[index] != null && in[index].time() != previousTimes[index];
     }
 

@@ -22,7 +22,10 @@ public abstract class Relation {
      */
     protected abstract void compute(RelationContext context) throws Exception;
 
-    /** The instance leaves the network (failed, replaced, unloaded, destroyed, stopped). */
+    /**
+     * The instance leaves the network (failed, replaced, unloaded, destroyed, stopped). It may be called
+     * while its last firing is still finishing on another thread: release resources, do not wait for it.
+     */
     protected void close() {
     }
 }

@@ -68,6 +68,7 @@ public final class RuntimeNetwork implements AutoCloseable {
     private volatile boolean closed;
 
     private RuntimeNetwork(NetworkInfo definition, RuntimeOptions options) {
+        options.seal();
         this.options = options;
         this.events = new EventPublisher(options.clock());
         options.sinks().forEach(events::add);
@@ -148,6 +149,23 @@ public final class RuntimeNetwork implements AutoCloseable {
         events.remove(sink);
     }
 
+    /**
+     * The running instance of a Data, e.g. a {@link SensorData} a driver pushes into; {@code null} when the
+     * Data is not running here. A new instance replaces it when its module reloads or its parameters change.
+     *
+     * @throws IllegalArgumentException when the instance is not a {@code type}
+     */
+    public <T extends Data> T dataInstance(NodeRef ref, Class<T> type) {
+        DataNode d = dataNode(ref);
+        if (d == null) {
+            return null;
+        }
+        if (!type.isInstance(d.data)) {
+            throw new IllegalArgumentException(ref + " is a " + d.data.getClass().getName() + ", not a " + type.getName());
+        }
+        return type.cast(d.data);
+    }
+
     /** Reads the current definition under the structure lock (no copy): for Servants and queries. */
     public <T> T readDefinition(Function<NetworkInfo, T> reader) {
         structure.lock();
@@ -187,7 +205,7 @@ public final class RuntimeNetwork implements AutoCloseable {
      */
     ChangeOutcome change(String description, int source, NetworkEdit edit, Set<String> nextLoaded,
                          Set<String> nextHeld, Set<NodeRef> restart, List<NetworkCommandDraft> moduleCommands) {
-        List<RelationNode> toRequest = new ArrayList<>();
+        Set<RelationNode> toRequest = new LinkedHashSet<>();
         List<SensorData> toStart = new ArrayList<>();
         ChangeOutcome outcome;
         structure.lock();
@@ -289,7 +307,7 @@ public final class RuntimeNetwork implements AutoCloseable {
 
     private void commit(int source, NetworkInfo candidate, Set<String> loadedNext, Set<String> heldNext,
                         StructurePlan plan, Prepared prepared, List<NetworkCommandDraft> moduleCommands,
-                        List<RelationNode> toRequest, List<SensorData> toStart) {
+                        Set<RelationNode> toRequest, List<SensorData> toStart) {
         for (NetworkCommandDraft c : moduleCommands) {
             events.command(source, c.command(), c.module(), "module");
         }
@@ -318,7 +336,7 @@ public final class RuntimeNetwork implements AutoCloseable {
         definition = candidate;
         loaded = loadedNext;
         held = heldNext;
-        rewire(plan, toRequest);
+        Rewiring.apply(relations.values(), datas, links, held, plan, toRequest, events);
         remoteLinks = remoteLinksOf(plan, prepared.brokenStandIns());
     }
 
@@ -362,7 +380,7 @@ public final class RuntimeNetwork implements AutoCloseable {
     }
 
     private void createNodes(int source, StructurePlan plan, Prepared prepared, Map<NodeRef, DataNode> removed,
-                             List<RelationNode> toRequest, List<SensorData> toStart) {
+                             Set<RelationNode> toRequest, List<SensorData> toStart) {
         for (Map.Entry<NodeRef, NodeFactory.PreparedData> e : prepared.datas().entrySet()) {
             NodeRef ref = e.getKey();
             boolean standIn = plan.standIns.containsKey(ref);
@@ -379,8 +397,9 @@ public final class RuntimeNetwork implements AutoCloseable {
                     && java.util.Objects.equals(old.info.parameter("initial"), info.parameter("initial"))) {
                 first = old.value;
             }
+            // a stand-in is named (so connection events about it resolve) but never "created": its host creates it
+            events.named(id, NodeKind.DATA, ref);
             if (!standIn) {
-                events.named(id, NodeKind.DATA, ref);
                 events.command(source, NetworkCommand.CREATE, Integer.toString(id), "data");
             }
             flow.initialize(node, first);
@@ -403,92 +422,6 @@ public final class RuntimeNetwork implements AutoCloseable {
                 }, node.periodMillis, node.periodMillis, TimeUnit.MILLISECONDS);
             }
             toRequest.add(node);
-        }
-    }
-
-    /** Gives every local Relation its wiring and every Data its readers; reports status changes. */
-    private void rewire(StructurePlan plan, List<RelationNode> toRequest) {
-        Map<NodeRef, List<RelationNode>> readersOf = new HashMap<>();
-        for (RelationNode r : relations.values()) {
-            List<LiveLink> declared = plan.declared.getOrDefault(r.ref, List.of());
-            List<NodeRef> inRefs = new ArrayList<>();
-            List<DataNode> ins = new ArrayList<>();
-            List<NodeRef> outRefs = new ArrayList<>();
-            List<DataNode> outs = new ArrayList<>();
-            List<NodeRef> missing = new ArrayList<>();
-            for (LiveLink l : declared) {
-                DataNode d = links.contains(l) ? datas.get(l.data()) : null;
-                if (d == null) {
-                    missing.add(l.data());
-                }
-                if (l.kind() == ConnectionKind.READER) {
-                    inRefs.add(l.data());
-                    ins.add(d);
-                    if (d != null && r.triggeredBy(l.data())) {
-                        readersOf.computeIfAbsent(l.data(), k -> new ArrayList<>()).add(r);
-                    }
-                } else {
-                    outRefs.add(l.data());
-                    outs.add(d);
-                }
-            }
-            Wiring next = new Wiring(inRefs.toArray(NodeRef[]::new), ins.toArray(DataNode[]::new),
-                    outRefs.toArray(NodeRef[]::new), outs.toArray(DataNode[]::new));
-            Wiring current = r.wiring;
-            if (!sameWiring(current, next)) {
-                r.wiring = next;
-                if (!toRequest.contains(r)) {
-                    toRequest.add(r);
-                }
-            }
-            r.missing = List.copyOf(missing);
-            boolean isHeld = held.contains(r.ref.module());
-            boolean resumed = r.held && !isHeld;
-            r.held = isHeld;
-            if (resumed && r.missedWhileHeld) {
-                r.missedWhileHeld = false;
-                toRequest.add(r);
-            }
-            updateStatus(r);
-        }
-        for (DataNode d : datas.values()) {
-            List<RelationNode> readers = readersOf.getOrDefault(d.ref, List.of());
-            d.readers = readers.toArray(RelationNode[]::new);
-        }
-    }
-
-    private static boolean sameWiring(Wiring a, Wiring b) {
-        return Arrays.equals(a.inputRefs(), b.inputRefs()) && Arrays.equals(a.outputRefs(), b.outputRefs())
-                && identical(a.inputs(), b.inputs()) && identical(a.outputs(), b.outputs());
-    }
-
-    private static boolean identical(DataNode[] a, DataNode[] b) {
-        if (a.length != b.length) {
-            return false;
-        }
-        for (int i = 0; i < a.length; i++) {
-            if (a[i] != b[i]) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    private void updateStatus(RelationNode r) {
-        if (r.status == RelationStatus.FAILED || !r.alive) {
-            return;
-        }
-        RelationStatus next = r.held ? RelationStatus.HELD
-                : r.missing.isEmpty() ? RelationStatus.RUNNING : RelationStatus.WAITING;
-        String before = r.reportedState;
-        r.status = next;
-        String now = r.state().text();
-        if (!now.equals(before)) {
-            r.reportedState = now;
-            if (next == RelationStatus.WAITING) {
-                LOG.info("{} {}", r.ref, now);
-            }
-            events.relationValue(r.id, now);
         }
     }
 

@@ -200,4 +200,25 @@ class ExecutionTest {
             assertThat(values.get()).isBetween(10, 40);
         }
     }
+
+    @Test
+    void shouldRefuseAnObserverThatWritesBackInsteadOfDeadlocking() throws Exception {
+        NetworkInfo n = new NetworkInfo("reentrant");
+        n.addNode("main", data("A", "DoubleData"));
+        n.addNode("main", data("B", "DoubleData"));
+        try (RuntimeNetwork net = start(n, null)) {
+            List<Throwable> refused = new CopyOnWriteArrayList<>();
+            net.controller().observe(ref("A"), (d, id, v) -> {
+                try {
+                    net.controller().setValue(ref("B"), v);
+                } catch (IllegalStateException e) {
+                    refused.add(e);
+                }
+            });
+            net.controller().setValue(ref("A"), "1");
+            assertThat(refused).singleElement().satisfies(e -> assertThat(e).hasMessageContaining("must enqueue and return"));
+            net.controller().setValue(ref("B"), "2");
+            assertThat(net.controller().value(ref("B")).asDouble()).isEqualTo(2.0);
+        }
+    }
 }

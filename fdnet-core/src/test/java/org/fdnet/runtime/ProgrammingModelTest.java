@@ -80,14 +80,13 @@ class ProgrammingModelTest {
         read(n, "main", "Gyro", "Scale");
         write(n, "main", "Scale", "Scaled");
         try (RuntimeNetwork net = start(n, null)) {
-            DoubleSensor[] sensor = new DoubleSensor[1];
-            // the sensor instance is the one the network made; a device driver would get it the same way
-            net.controller().observe(ref("Gyro"), (d, id, v) -> { });
-            sensor[0] = SensorAccess.sensor(net, ref("Gyro"), DoubleSensor.class);
-            sensor[0].push(0.25);
+            // the instance the network made, as a device driver gets it
+            DoubleSensor sensor = net.dataInstance(ref("Gyro"), DoubleSensor.class);
+            sensor.push(0.25);
             quiet(net);
             assertThat(net.controller().value(ref("Scaled")).asDouble()).isEqualTo(25.0);
             assertThat(net.controller().value(ref("Gyro")).time()).isPositive();
+            assertThatThrownBy(() -> net.dataInstance(ref("Scaled"), DoubleSensor.class)).hasMessageContaining("not a");
         }
     }
 

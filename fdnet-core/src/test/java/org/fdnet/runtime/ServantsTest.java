@@ -69,7 +69,7 @@ class ServantsTest {
             assertThat(c.apply("plug a wheel sensor", NetworkEdits.addNode("main", data("Wheel", "DoubleSensor"))).executed()).isTrue();
             eventually("a filter for Wheel", () -> c.value(ref("Wheel filtered")) != null
                     && c.relationState(ref("Wheel filter")) != null);
-            DoubleSensor wheel = SensorAccess.sensor(net, ref("Wheel"), DoubleSensor.class);
+            DoubleSensor wheel = net.dataInstance(ref("Wheel"), DoubleSensor.class);
             wheel.push(8.0);
             quiet(net);
             wheel.push(8.0);

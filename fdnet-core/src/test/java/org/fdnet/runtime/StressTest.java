@@ -22,7 +22,7 @@ import org.junit.jupiter.api.Timeout;
  */
 class StressTest {
     private static final int WRITERS = 6;
-    private static final int VALUES = 3000;
+    private static final int VALUES = 20_000;
 
     private static NetworkInfo network() {
         NetworkInfo n = new NetworkInfo("stress");
@@ -42,7 +42,6 @@ class StressTest {
         // a module that reads every writer's Data and is loaded and unloaded while they write
         n.addModule("Extra", true);
         n.addNode("Extra", data("Sum", "DoubleData"));
-        StringBuilder sum = new StringBuilder("0");
         n.addNode("Extra", relation("Adder", "Expression", "expression=" + sumOf()));
         for (int w = 0; w < WRITERS; w++) {
             read(n, "Extra", "In" + w, "Adder");
@@ -69,7 +68,7 @@ class StressTest {
             ConcurrentHashMap<String, List<Long>> seen = new ConcurrentHashMap<>();
             for (int w = 0; w < WRITERS; w++) {
                 String name = "In" + w;
-                List<Long> values = new CopyOnWriteArrayList<>();
+                List<Long> values = java.util.Collections.synchronizedList(new ArrayList<>(VALUES));
                 seen.put(name, values);
                 c.observe(ref(name), (d, id, v) -> values.add(v.asLong()));
             }

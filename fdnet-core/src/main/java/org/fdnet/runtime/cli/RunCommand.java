@@ -114,7 +114,16 @@ public final class RunCommand implements Callable<Integer> {
             return 1;
         }
         CountDownLatch stop = new CountDownLatch(1);
-        Thread hook = new Thread(stop::countDown, "fdnet-run-stop");
+        CountDownLatch summarized = new CountDownLatch(1);
+        // Ctrl-C: stop the run, and keep the JVM alive until the summary is printed (at most 5 s)
+        Thread hook = new Thread(() -> {
+            stop.countDown();
+            try {
+                summarized.await(5, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "fdnet-run-stop");
         Runtime.getRuntime().addShutdownHook(hook);
         try {
             Controller controller = network.controller();
@@ -134,6 +143,7 @@ public final class RunCommand implements Callable<Integer> {
             summary(out, definition, network, counter, started);
         } finally {
             network.close();
+            summarized.countDown();
             try {
                 Runtime.getRuntime().removeShutdownHook(hook);
             } catch (IllegalStateException shuttingDown) {

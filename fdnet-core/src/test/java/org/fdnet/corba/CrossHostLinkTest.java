@@ -8,7 +8,11 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import java.util.stream.LongStream;
+import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.Host;
+import org.fdnet.corba.idl.NodeSpec;
+import org.fdnet.netinfo.ConnectionInfo;
+import org.fdnet.netinfo.Parameter;
 import org.fdnet.corba.idl.Refused;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
@@ -44,8 +48,8 @@ class CrossHostLinkTest {
         LinkSettings small = new LinkSettings(4, 256, 1 << 16, 100);
         base = cluster.startLocalHost("base", baseNetwork, small);
         observer = cluster.startLocalHost("observer", observerNetwork, small);
-        baseNetwork.create(MAP, NodeInfo.data(MAP.node(), "org.fdnet.runtime.library.LongData"));
-        observerNetwork.create(SEEN, NodeInfo.data(SEEN.node(), "org.fdnet.runtime.library.LongData"));
+        baseNetwork.create(MAP, NodeInfo.data(MAP.node(), "LongData"));
+        observerNetwork.create(SEEN, NodeInfo.data(SEEN.node(), "LongData"));
         observerNetwork.observe(SEEN, (value, origin) -> {
             synchronized (received) {
                 received.add((Long) value);
@@ -99,7 +103,7 @@ class CrossHostLinkTest {
     }
 
     @Test
-    void shouldRefuseARemoteCreateOutsideTheAllowedPaths() {
+    void shouldRefuseARemoteCreateOutsideTheAllowedPathsOrBuiltIns() throws Exception {
         Host crawler = cluster.startHost("crawler", "--allow-path", System.getProperty("java.io.tmpdir"));
         NodeInfo outside = new NodeInfo(org.fdnet.netinfo.NodeKind.RELATION, "evil", "crawler", "/etc",
                 "Evil", List.of());
@@ -108,11 +112,24 @@ class CrossHostLinkTest {
                 .isInstanceOf(Refused.class)
                 .satisfies(e -> assertThat(((Refused) e).reason).contains("outside this host's allowed paths"));
         assertThat(crawler.nodes()).isEmpty();
+        assertThatThrownBy(() -> crawler.createNode(IdlMapping.spec("main",
+                new NodeInfo(org.fdnet.netinfo.NodeKind.RELATION, "evil", "crawler", "", "java.lang.Thread", List.of()))))
+                .isInstanceOf(Refused.class)
+                .satisfies(e -> assertThat(((Refused) e).reason).contains("is not built in"));
     }
 
-    /** The wiring the coordinator makes for a host (again after a restart). */
+    /**
+     * The wiring the coordinator makes for a host (again after a restart): the crawler's Relation "use"
+     * reads the map, so the crawler keeps a stand-in of it.
+     */
     private void wireThrough(Host crawler) throws Exception {
-        crawler.createStandIn(IdlMapping.spec("main", NodeInfo.data(MAP.node(), "org.fdnet.runtime.library.LongData")), "base");
+        crawler.createStandIn(IdlMapping.spec("main", NodeInfo.data(MAP.node(), "LongData")), "base");
+        NodeRef use = new NodeRef("main", "use");
+        NodeRef out = new NodeRef("main", "out");
+        crawler.loadModule("main", new NodeSpec[] {
+            IdlMapping.spec("main", NodeInfo.relation(use.node(), "Expression", Parameter.named("expression", "in0"))),
+            IdlMapping.spec("main", NodeInfo.data(out.node(), "LongData"))}, new ConnectionSpec[] {
+                IdlMapping.spec(ConnectionInfo.reader(MAP, use)), IdlMapping.spec(ConnectionInfo.writer(use, out))});
         crawler.acceptLink(1, IdlMapping.id(MAP), "base");
         base.reference().forward(1, IdlMapping.id(MAP), crawler, "crawler", 4);
         observer.reference().acceptLink(2, IdlMapping.id(SEEN), "crawler");

@@ -12,11 +12,11 @@ import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 
 /**
- * A {@link LocalNetwork} of Data cells only: values and their observers, no Relations. It serves hosts
- * that only publish and relay values (and the transport's own tests and benchmark); Relations need the
- * runtime engine and are refused with that reason.
+ * A {@link LocalNetwork} of Data cells only (values and their observers, no Relations): the seam fake for
+ * the transport's tests, where a host in the test JVM only publishes or observes values. Real hosts run
+ * {@link RuntimeLocalNetwork}.
  */
-public final class DataOnlyNetwork implements LocalNetwork {
+final class DataOnlyNetwork implements LocalNetwork {
     private final Map<NodeRef, Cell> cells = new ConcurrentHashMap<>();
 
     private static final class Cell {

@@ -82,19 +82,31 @@ public final class DeploymentPlan {
     private final Map<String, HostShare> shares = new LinkedHashMap<>();
     private final List<Link> links = new ArrayList<>();
 
+    /** Plans the modules of {@code network} that are loaded at start. */
+    public static DeploymentPlan of(NetworkInfo network, String localHost, Set<String> localNames) {
+        return of(network, localHost, localNames, Set.of());
+    }
+
     /**
-     * Plans the modules of {@code network} that are loaded at start.
+     * Plans {@code main}, the modules loaded at start and {@code alsoLoaded}.
      *
      * @param localHost  the name the coordinating process's own host has
      * @param localNames names that mean "this machine" besides the loopback names
+     * @throws IllegalArgumentException naming a module of {@code alsoLoaded} the network does not have
      */
-    public static DeploymentPlan of(NetworkInfo network, String localHost, Set<String> localNames) {
+    public static DeploymentPlan of(NetworkInfo network, String localHost, Set<String> localNames,
+                                    Set<String> alsoLoaded) {
+        for (String m : alsoLoaded) {
+            if (network.module(m) == null) {
+                throw new IllegalArgumentException("the network has no module named '" + m + "'");
+            }
+        }
         DeploymentPlan plan = new DeploymentPlan();
         Map<NodeRef, String> hostOf = new LinkedHashMap<>();
         Set<String> local = new LinkedHashSet<>();
         localNames.forEach(n -> local.add(n.toLowerCase(Locale.ROOT)));
         for (ModuleInfo m : network.modules()) {
-            if (!m.isMain() && !m.loadAtStart()) {
+            if (!m.isMain() && !m.loadAtStart() && !alsoLoaded.contains(m.name())) {
                 continue;
             }
             for (NodeInfo n : m.nodes()) {

@@ -25,7 +25,7 @@ import org.fdnet.runtime.Placement;
 public final class DistributedRun {
     /** What the command line gives a distributed run. */
     public record Request(Path file, NetworkInfo definition, Duration duration, List<Path> allowedRoots,
-                          String namingCorbaloc, String localHostName, List<String> sets) {
+                          String namingCorbaloc, String localHostName, List<String> sets, List<String> loads) {
     }
 
     private DistributedRun() {
@@ -51,7 +51,15 @@ public final class DistributedRun {
         NetworkInfo definition = withAbsolutePaths(request.definition(), request.file());
         List<Path> roots = new ArrayList<>(request.allowedRoots());
         roots.add(request.file().toAbsolutePath().getParent());
-        DeploymentPlan plan = DeploymentPlan.of(definition, request.localHostName(), lowerCase(Placement.localNames()));
+        DeploymentPlan plan;
+        try {
+            plan = DeploymentPlan.of(definition, request.localHostName(), lowerCase(Placement.localNames()),
+                    Set.copyOf(request.loads()));
+        } catch (IllegalArgumentException e) {
+            err.println("--load: " + e.getMessage());
+            err.flush();
+            return 2;
+        }
         OrbSettings settings = OrbSettings.defaults().withNaming(request.namingCorbaloc());
         out.printf("distributing %s over hosts %s (naming %s; this process is host %s)%n",
                 definition.name() == null ? request.file() : definition.name(), plan.hosts(),

@@ -55,6 +55,17 @@ class DeploymentPlanTest {
     }
 
     @Test
+    void shouldPlanAModuleNotLoadedAtStartOnlyWhenAsked() {
+        NetworkInfo n = twoRobots();
+        n.addModule("Search", false);
+        n.addNode("Search", data("grid", "crawler"));
+
+        assertThat(DeploymentPlan.of(n, "run-1", Set.of()).shareOf("crawler").nodes()).hasSize(2);
+        assertThat(DeploymentPlan.of(n, "run-1", Set.of(), Set.of("Search")).shareOf("crawler").nodes())
+                .extracting(p -> p.ref().toString()).contains("Search/grid");
+    }
+
+    @Test
     void shouldTreatThisMachinesNamesAsLocal() {
         assertThat(DeploymentPlan.placeOf("Robot-PC", "run-1", Set.of("robot-pc"))).isEqualTo("run-1");
         assertThat(DeploymentPlan.placeOf("127.0.0.1", "run-1", Set.of())).isEqualTo("run-1");

@@ -91,7 +91,7 @@ public final class RunCommand implements Callable<Integer> {
         }
         EventCounter counter = new EventCounter();
         if (distribution.appliesTo(definition)) {
-            return distribution.run(file, definition, duration, allowedRoots, sets, counter, out, err);
+            return distribution.run(file, definition, duration, allowedRoots, sets, loads, counter, out, err);
         }
         RuntimeOptions options = RuntimeOptions.defaults().sink(counter)
                 .classLoading(ClassLoadingPolicy.forNetworkFile(file, allowedRoots));

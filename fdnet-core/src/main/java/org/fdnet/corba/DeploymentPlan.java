@@ -1,6 +1,7 @@
 package org.fdnet.corba;
 
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -177,6 +178,6 @@ public final class DeploymentPlan {
         return links().stream().filter(l -> l.fromHost.equals(host) || l.toHost.equals(host)).toList();
     }
 
-    private static final java.util.Comparator<Link> OPENING_ORDER =
-            java.util.Comparator.comparing((Link l) -> !l.fromDataHome()).thenComparingLong(Link::id);
+    private static final Comparator<Link> OPENING_ORDER =
+            Comparator.comparing((Link l) -> !l.fromDataHome()).thenComparingLong(Link::id);
 }

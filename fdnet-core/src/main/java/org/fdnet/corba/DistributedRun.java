@@ -4,6 +4,7 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -201,7 +202,7 @@ public final class DistributedRun {
     }
 
     private static Set<String> lowerCase(Set<String> names) {
-        Set<String> lower = new java.util.HashSet<>();
+        Set<String> lower = new HashSet<>();
         names.forEach(n -> lower.add(n.toLowerCase(Locale.ROOT)));
         return lower;
     }

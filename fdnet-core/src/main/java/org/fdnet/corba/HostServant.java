@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.NoSuchElementException;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicLong;
 import org.fdnet.corba.idl.ChangeKind;
 import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.HostPOA;
@@ -44,7 +45,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     private final ChangeNotifier notifier;
     private final Map<Long, InboundLink> inbound = new ConcurrentHashMap<>();
     private final Map<Long, Forwarding> outbound = new ConcurrentHashMap<>();
-    private final java.util.concurrent.atomic.AtomicLong retiredReceived = new java.util.concurrent.atomic.AtomicLong();
+    private final AtomicLong retiredReceived = new AtomicLong();
 
     private record Forwarding(OutboundLink link, NodeRef source, AutoCloseable observation) {
     }

@@ -1,5 +1,6 @@
 package org.fdnet.corba;
 
+import java.util.ArrayList;
 import java.util.List;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.NodeInfo;
@@ -23,7 +24,7 @@ public interface LocalNetwork {
      * one change: a Relation starts with its connections in place. All or nothing.
      */
     default void load(String module, List<NodeInfo> nodes, List<ConnectionInfo> connections) {
-        List<NodeRef> created = new java.util.ArrayList<>();
+        List<NodeRef> created = new ArrayList<>();
         try {
             for (NodeInfo n : nodes) {
                 NodeRef ref = new NodeRef(module, n.name());

@@ -1,5 +1,6 @@
 package org.fdnet.corba;
 
+import java.nio.file.Path;
 import java.util.Objects;
 import java.util.Properties;
 
@@ -114,7 +115,7 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
      * The extra properties JacORB's NameServer needs to answer {@code corbaloc::…/NameService}; it keeps
      * its bindings in {@code stateDirectory} (by default it would write them into the working directory).
      */
-    public Properties toNamingServerProperties(java.nio.file.Path stateDirectory) {
+    public Properties toNamingServerProperties(Path stateDirectory) {
         Properties p = toOrbProperties();
         p.setProperty(NAMING_DB_DIR, stateDirectory.toString());
         p.setProperty(NAMING_PRINT_IOR, "false");

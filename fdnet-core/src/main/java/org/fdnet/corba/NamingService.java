@@ -5,6 +5,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.net.InetSocketAddress;
+import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.ArrayList;
 import java.util.List;
@@ -31,6 +32,7 @@ public final class NamingService {
         if (settings.port() == 0) {
             throw new IllegalArgumentException("the naming service needs a fixed port (clients must know it)");
         }
+        requireFree(settings);
         OrbRuntime.prepareJvm();
         Path state = stateDirectory();
         List<String> args = new ArrayList<>();
@@ -57,6 +59,16 @@ public final class NamingService {
         }
         throw new IllegalStateException("the naming service did not listen on " + settings.bindAddress() + ":"
                 + settings.port() + " (is the port in use?)");
+    }
+
+    /** Readiness is judged by a connection to the port: another process already on it must not pass for us. */
+    private static void requireFree(OrbSettings settings) {
+        try (ServerSocket probe = new ServerSocket()) {
+            probe.bind(new InetSocketAddress(settings.bindAddress(), settings.port()));
+        } catch (IOException e) {
+            throw new IllegalStateException("port " + settings.port() + " on " + settings.bindAddress()
+                    + " is in use (another naming service?): " + e.getMessage(), e);
+        }
     }
 
     /** A fresh folder for the bindings, removed when the JVM exits: hosts register again after a restart. */

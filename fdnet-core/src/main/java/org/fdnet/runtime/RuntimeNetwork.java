@@ -362,15 +362,7 @@ public final class RuntimeNetwork implements AutoCloseable {
             if (!wantedHere || prepared.datas().containsKey(d.ref)) {
                 datas.remove(d.ref);
                 removed.put(d.ref, d);
-                d.alive = false;
-                if (d.data instanceof SensorData s) {
-                    stopQuietly(s);
-                }
-                try {
-                    d.data.close();
-                } catch (RuntimeException e) {
-                    LOG.warn("{}: close failed", d.ref, e);
-                }
+                retire(d);
                 if (!d.standIn) {
                     events.command(source, NetworkCommand.DESTROY, Integer.toString(d.id), "data");
                 }
@@ -569,17 +561,22 @@ public final class RuntimeNetwork implements AutoCloseable {
             }
         }
         for (DataNode d : datas.values()) {
-            d.alive = false;
-            if (d.data instanceof SensorData s) {
-                stopQuietly(s);
-            }
-            try {
-                d.data.close();
-            } catch (RuntimeException e) {
-                LOG.warn("{}: close failed", d.ref, e);
-            }
+            retire(d);
         }
         events.flush();
         resolver.close();
+    }
+
+    /** A Data leaves: no more writes, its sensor stops, its resources close. */
+    private static void retire(DataNode d) {
+        d.alive = false;
+        if (d.data instanceof SensorData s) {
+            stopQuietly(s);
+        }
+        try {
+            d.data.close();
+        } catch (RuntimeException e) {
+            LOG.warn("{}: close failed", d.ref, e);
+        }
     }
 }

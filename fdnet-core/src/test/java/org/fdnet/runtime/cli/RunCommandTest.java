@@ -2,34 +2,28 @@ package org.fdnet.runtime.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.fdnet.cli.FdnetCommand;
+import org.fdnet.testing.CliRun;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
 @Timeout(60)
 class RunCommandTest {
     @TempDir
     Path dir;
 
-    private final StringWriter output = new StringWriter();
+    private final CliRun cli = new CliRun();
 
     private int fdnet(String... args) {
-        CommandLine cli = FdnetCommand.commandLine();
-        cli.setOut(new PrintWriter(output, true));
-        cli.setErr(new PrintWriter(output, true));
-        return cli.execute(args);
+        return cli.fdnet(args);
     }
 
     @Test
     void shouldRunRoqMotionAndReportItsValuesEventsAndRelations() {
         assertThat(fdnet("run", "../networks/roq-motion.fdn", "--for", "1500ms", "--set", "Walk/I want to walk=0.5")).isZero();
-        String out = output.toString();
+        String out = cli.output();
         assertThat(out).contains("running: modules [main, Balance, Walk, Integration]")
                 .containsPattern("\\[\\s+1\\.\\ds\\] firings [\\d,]+ {2}values [\\d,]+ {2}events [\\d,]+ {2}failed 0")
                 .contains("summary of roq-motion")
@@ -44,7 +38,7 @@ class RunCommandTest {
     void shouldExitOneAndNameEveryProblemOfABadFile() throws Exception {
         Path bad = Files.writeString(dir.resolve("bad.fdn"), "<?xml version=\"1.0\"?>\n<cnet>\n<robot/>\n</cnet>\n");
         assertThat(fdnet("run", bad.toString(), "--for", "1s")).isEqualTo(1);
-        assertThat(output.toString()).contains(bad + ":3:");
+        assertThat(cli.output()).contains(bad + ":3:");
     }
 
     @Test
@@ -53,20 +47,20 @@ class RunCommandTest {
                 + "<pstructure><name>Mystery</name><host>localhost</host><path></path><class>NoSuchRelation</class></pstructure>\n"
                 + "</cnet>\n");
         assertThat(fdnet("run", file.toString(), "--for", "1s")).isEqualTo(1);
-        assertThat(output.toString()).contains("the network cannot start")
+        assertThat(cli.output()).contains("the network cannot start")
                 .contains("module 'main', node 'Mystery', class 'NoSuchRelation'");
     }
 
     @Test
     void shouldExitTwoForASetThatDoesNotFit() {
         assertThat(fdnet("run", "../networks/roq-motion.fdn", "--for", "1s", "--set", "A present posture=1 2")).isEqualTo(2);
-        assertThat(output.toString()).contains("--set A present posture=1 2").contains("4 are expected");
+        assertThat(cli.output()).contains("--set A present posture=1 2").contains("4 are expected");
     }
 
     @Test
     void shouldTraceEveryEventWithNodeNames() {
         assertThat(fdnet("run", "../networks/roq-motion.fdn", "--for", "300ms", "--trace")).isZero();
-        assertThat(output.toString()).contains("trace ").contains("command  load module main")
+        assertThat(cli.output()).contains("trace ").contains("command  load module main")
                 .contains("named    #").contains("value    main/Physical information = ")
                 .contains("relation Integration/integrate RUNNING");
     }

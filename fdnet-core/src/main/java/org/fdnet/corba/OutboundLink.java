@@ -30,6 +30,8 @@ import org.slf4j.LoggerFactory;
 public final class OutboundLink implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(OutboundLink.class);
     private static final AtomicInteger THREADS = new AtomicInteger();
+    /** The longest a writer waits for room while the peer acknowledges nothing. */
+    static final long MAX_WRITER_WAIT_MILLIS = 2_000;
 
     /** Told when a link breaks and when it carries values again. */
     public interface StateListener {
@@ -58,6 +60,9 @@ public final class OutboundLink implements AutoCloseable {
     private int waitingCallers;
     private long lost;
     private long nextProbeNanos;
+    private long lastProgressNanos;
+    private long fullSinceNanos;
+    private boolean stallReported;
     private long generation;
     private ValueSink sink;
 
@@ -85,15 +90,28 @@ public final class OutboundLink implements AutoCloseable {
         return description;
     }
 
-    /** Queues one value; waits while the ring is full and the peer reachable (flow control, never loss). */
+    /**
+     * Queues one value. While the ring is full and the peer reachable the writer waits (flow control, no
+     * loss) — but never longer than {@link #MAX_WRITER_WAIT_MILLIS} without the peer acknowledging anything:
+     * a writer blocked for good would stall its whole engine, and two hosts flooding each other could
+     * deadlock. Then, as while the peer is down, the oldest value is dropped and counted.
+     */
     public void offer(Object value) {
+        boolean reportStall = false;
         synchronized (lock) {
             while (!closed && tailSeq - headSeq == ring.length) {
-                if (broken) {
+                long now = System.nanoTime();
+                if (fullSinceNanos == 0) {
+                    fullSinceNanos = now; // the stall clock starts when the ring fills, not at the last ack
+                }
+                boolean stalled = now - Math.max(lastProgressNanos, fullSinceNanos) > MAX_WRITER_WAIT_MILLIS * 1_000_000L;
+                if (broken || stalled) {
                     ring[(int) (headSeq & mask)] = null;
                     headSeq++;
                     sendSeq = Math.max(sendSeq, headSeq);
                     lost++;
+                    reportStall = stalled && !broken && !stallReported;
+                    stallReported |= reportStall;
                     break;
                 }
                 writerWaiting = true;
@@ -116,6 +134,10 @@ public final class OutboundLink implements AutoCloseable {
                     lock.notify();
                 }
             }
+        }
+        if (reportStall) {
+            LOG.warn("link {}: the peer acknowledged nothing for {} ms with {} values waiting; dropping the oldest"
+                    + " until it catches up", description, MAX_WRITER_WAIT_MILLIS, ring.length);
         }
     }
 
@@ -253,6 +275,11 @@ public final class OutboundLink implements AutoCloseable {
 
     private void acknowledge(long expected) {
         long upTo = Math.min(expected, tailSeq);
+        if (upTo > headSeq) {
+            lastProgressNanos = System.nanoTime();
+            fullSinceNanos = 0;
+            stallReported = false;
+        }
         while (headSeq < upTo) {
             ring[(int) (headSeq & mask)] = null;
             headSeq++;

@@ -172,15 +172,20 @@ public final class NetworkDeployment implements AutoCloseable {
     }
 
     private void lost(String name, String reason) {
+        // Status first (links broken, then the host lost), so a reader never sees a lost host with live links.
+        List<DeploymentPlan.Link> newlyBroken = new ArrayList<>();
+        for (DeploymentPlan.Link link : plan.linksTouching(name)) {
+            if (brokenLinks.add(link.id())) {
+                newlyBroken.add(link);
+            }
+        }
         lostSince.put(name, System.nanoTime());
         LOG.warn("host {} lost: {}", name, reason);
         listener.hostLost(name, reason);
-        for (DeploymentPlan.Link link : plan.linksTouching(name)) {
-            if (brokenLinks.add(link.id())) {
-                events.accept(new NetworkCommandEvent(0, clock.next(), "host", NetworkCommand.DISCONNECT,
-                        link.toString(), "link"));
-                listener.linkBroken(link, "host " + name + " lost: " + reason);
-            }
+        for (DeploymentPlan.Link link : newlyBroken) {
+            events.accept(new NetworkCommandEvent(0, clock.next(), "host", NetworkCommand.DISCONNECT,
+                    link.toString(), "link"));
+            listener.linkBroken(link, "host " + name + " lost: " + reason);
         }
     }
 

@@ -99,13 +99,17 @@ class DistributedNetworkTest {
         cluster.restart("crawler");
         awaitTrue(() -> deployment.lostHosts().isEmpty() && deployment.brokenLinks().isEmpty(), 20_000);
         long producedAfterRecovery = (Long) ValueCodec.decode(deployment.host("flyer").read(IdlMapping.id(LOG)));
-        awaitTrue(() -> !snapshot().isEmpty() && snapshot().get(snapshot().size() - 1) >= producedAfterRecovery + 50,
+        awaitTrue(() -> lastSeen() >= producedAfterRecovery + 50,
                 30_000);
 
         List<Long> got = snapshot();
-        assertThat(got).isSorted().doesNotHaveDuplicates();
         long last = got.get(got.size() - 1);
-        assertThat(got).containsAll(LongStream.rangeClosed(producedBeforeDeath + 1, last).boxed().toList());
+        // Every value produced after the crawler died arrives exactly once, in order.
+        assertThat(got.stream().filter(v -> v > producedBeforeDeath).toList())
+                .containsExactlyElementsOf(LongStream.rangeClosed(producedBeforeDeath + 1, last).boxed().toList());
+        // Values in flight at the kill may come once more, right after recovery (the flyer cannot know
+        // whether the dead crawler passed them on): at most one step back, never below what was in flight.
+        assertThat(stepsBack(got)).isLessThanOrEqualTo(1);
         assertThat(deployment.recoveryMillis()).containsKey("crawler");
         assertThat(events.events()).filteredOn(e -> e instanceof NetworkCommandEvent c
                 && c.command() == NetworkCommand.DISCONNECT && c.paramsType().equals("link")).hasSize(3);
@@ -134,6 +138,22 @@ class DistributedNetworkTest {
         } catch (Exception e) {
             return e.toString();
         }
+    }
+
+    static int stepsBack(List<Long> values) {
+        int back = 0;
+        for (int i = 1; i < values.size(); i++) {
+            if (values.get(i) <= values.get(i - 1)) {
+                back++;
+            }
+        }
+        return back;
+    }
+
+    /** The last value seen, or -1 before the first. */
+    private long lastSeen() {
+        List<Long> got = snapshot();
+        return got.isEmpty() ? -1 : got.get(got.size() - 1);
     }
 
     private int count() {

@@ -46,6 +46,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     private final Map<Long, InboundLink> inbound = new ConcurrentHashMap<>();
     private final Map<Long, Forwarding> outbound = new ConcurrentHashMap<>();
     private final AtomicLong retiredReceived = new AtomicLong();
+    private final Map<NodeRef, Map<String, Long>> seenByTarget = new ConcurrentHashMap<>();
 
     private record Forwarding(OutboundLink link, NodeRef source, AutoCloseable observation) {
     }
@@ -186,7 +187,9 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     @Override
     public void acceptLink(long link, NodeId target, String fromHost) throws UnknownNode {
         requireNode(target);
-        retire(inbound.put(link, new InboundLink(link, IdlMapping.ref(target), fromHost, network)));
+        NodeRef ref = IdlMapping.ref(target);
+        Map<String, Long> seen = seenByTarget.computeIfAbsent(ref, r -> new ConcurrentHashMap<>());
+        retire(inbound.put(link, new InboundLink(link, ref, fromHost, network, seen)));
         notifier.publish(ChangeKind.LINK_OPENED, "link " + link + " from " + fromHost + " into " + IdlMapping.ref(target));
     }
 
@@ -208,7 +211,8 @@ public final class HostServant extends HostPOA implements AutoCloseable {
             throw new Refused(e.getMessage());
         }
         String description = hostName + ":" + ref + " -> " + toHost + " (link " + link + ")";
-        OutboundLink out = new OutboundLink(link, description, sink, settings, new OutboundLink.StateListener() {
+        String stream = hostName + "#" + incarnation + "#" + link;
+        OutboundLink out = new OutboundLink(link, stream, description, sink, settings, new OutboundLink.StateListener() {
             @Override
             public void broken(OutboundLink l, String reason) {
                 notifier.publish(ChangeKind.LINK_BROKEN, l.description() + ": " + reason);
@@ -221,7 +225,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         });
         AutoCloseable observation = network.observe(ref, (value, origin) -> {
             if (!toHost.equals(origin)) {
-                out.offer(value);
+                out.offer(value, ValueOrigin.current());
             }
         });
         Forwarding old = outbound.put(link, new Forwarding(out, ref, observation));

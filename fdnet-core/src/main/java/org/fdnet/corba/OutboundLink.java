@@ -48,6 +48,9 @@ public final class OutboundLink implements AutoCloseable {
 
     private final Object lock = new Object();
     private final Object[] ring;
+    private final String[] originStreams;
+    private final long[] originSeqs;
+    private final String stream;
     private final int mask;
     private long headSeq;
     private long sendSeq;
@@ -66,13 +69,21 @@ public final class OutboundLink implements AutoCloseable {
     private long generation;
     private ValueSink sink;
 
-    public OutboundLink(long id, String description, ValueSink sink, LinkSettings settings, StateListener listener) {
+    /**
+     * @param stream the identity values written locally get here (see {@link ValueOrigin}): unique per host
+     *               incarnation and link, and kept when the link is re-pointed at a restarted peer
+     */
+    public OutboundLink(long id, String stream, String description, ValueSink sink, LinkSettings settings,
+                        StateListener listener) {
         this.id = id;
+        this.stream = Objects.requireNonNull(stream, "stream");
         this.description = Objects.requireNonNull(description, "description");
         this.sink = Objects.requireNonNull(sink, "sink");
         this.settings = Objects.requireNonNull(settings, "settings");
         this.listener = Objects.requireNonNull(listener, "listener");
         this.ring = new Object[settings.capacity()];
+        this.originStreams = new String[settings.capacity()];
+        this.originSeqs = new long[settings.capacity()];
         this.mask = settings.capacity() - 1;
         this.callers = new Thread[settings.window()];
         for (int i = 0; i < callers.length; i++) {
@@ -97,6 +108,11 @@ public final class OutboundLink implements AutoCloseable {
      * deadlock. Then, as while the peer is down, the oldest value is dropped and counted.
      */
     public void offer(Object value) {
+        offer(value, null);
+    }
+
+    /** Queues one value that entered the links at {@code origin} ({@code null}: written on this host). */
+    public void offer(Object value, ValueOrigin origin) {
         boolean reportStall = false;
         synchronized (lock) {
             while (!closed && tailSeq - headSeq == ring.length) {
@@ -107,6 +123,7 @@ public final class OutboundLink implements AutoCloseable {
                 boolean stalled = now - Math.max(lastProgressNanos, fullSinceNanos) > MAX_WRITER_WAIT_MILLIS * 1_000_000L;
                 if (broken || stalled) {
                     ring[(int) (headSeq & mask)] = null;
+                    originStreams[(int) (headSeq & mask)] = null;
                     headSeq++;
                     sendSeq = Math.max(sendSeq, headSeq);
                     lost++;
@@ -125,7 +142,10 @@ public final class OutboundLink implements AutoCloseable {
             if (closed) {
                 return;
             }
-            ring[(int) (tailSeq & mask)] = value;
+            int slot = (int) (tailSeq & mask);
+            ring[slot] = value;
+            originStreams[slot] = origin == null ? stream : origin.stream();
+            originSeqs[slot] = origin == null ? tailSeq : origin.seq();
             tailSeq++;
             if (waitingCallers > 0) {
                 if (writerWaiting) {
@@ -188,6 +208,8 @@ public final class OutboundLink implements AutoCloseable {
             long firstSeq;
             long callGeneration;
             ValueSink target;
+            String originStream;
+            long originFirstSeq;
             synchronized (lock) {
                 while (!closed && !readyToSend()) {
                     waitingCallers++;
@@ -202,7 +224,19 @@ public final class OutboundLink implements AutoCloseable {
                 if (closed) {
                     return;
                 }
-                int n = (int) Math.min(tailSeq - sendSeq, settings.batchMax());
+                int max = (int) Math.min(tailSeq - sendSeq, settings.batchMax());
+                int first = (int) (sendSeq & mask);
+                originStream = originStreams[first];
+                originFirstSeq = originSeqs[first];
+                // One batch, one origin stream with consecutive numbers: cut where that changes.
+                int n = 1;
+                while (n < max) {
+                    int slot = (int) ((sendSeq + n) & mask);
+                    if (!originStreams[slot].equals(originStream) || originSeqs[slot] != originFirstSeq + n) {
+                        break;
+                    }
+                    n++;
+                }
                 values = new Object[n];
                 for (int i = 0; i < n; i++) {
                     values[i] = ring[(int) ((sendSeq + i) & mask)];
@@ -213,7 +247,7 @@ public final class OutboundLink implements AutoCloseable {
                 callGeneration = generation;
                 target = sink;
             }
-            call(target, firstSeq, values, callGeneration);
+            call(target, firstSeq, originStream, originFirstSeq, values, callGeneration);
         }
     }
 
@@ -227,7 +261,8 @@ public final class OutboundLink implements AutoCloseable {
         return inFlight < (probing ? 1 : settings.window());
     }
 
-    private void call(ValueSink target, long firstSeq, Object[] values, long callGeneration) {
+    private void call(ValueSink target, long firstSeq, String originStream, long originFirstSeq, Object[] values,
+                      long callGeneration) {
         Value[] encoded = new Value[values.length];
         for (int i = 0; i < values.length; i++) {
             encoded[i] = ValueCodec.encode(values[i]);
@@ -235,7 +270,7 @@ public final class OutboundLink implements AutoCloseable {
         long expected;
         String failure;
         try {
-            expected = target.deliver(new ValueBatch(id, firstSeq, encoded));
+            expected = target.deliver(new ValueBatch(id, firstSeq, originStream, originFirstSeq, encoded));
             failure = null;
         } catch (UnknownLink e) {
             expected = -1;
@@ -282,6 +317,7 @@ public final class OutboundLink implements AutoCloseable {
         }
         while (headSeq < upTo) {
             ring[(int) (headSeq & mask)] = null;
+            originStreams[(int) (headSeq & mask)] = null;
             headSeq++;
         }
         if (sendSeq < headSeq) {

@@ -97,10 +97,9 @@ class CrossHostLinkTest {
 
         awaitTrue(() -> lastSeen() == last, 30_000);
         List<Long> got = snapshot();
-        // Written after the kill: each exactly once, in order. In flight at the kill: perhaps once more.
+        assertThat(got).isSorted().doesNotHaveDuplicates();
         assertThat(got.stream().filter(v -> v >= killedAt).toList())
                 .containsExactlyElementsOf(LongStream.range(killedAt, next).boxed().toList());
-        assertThat(DistributedNetworkTest.stepsBack(got)).isLessThanOrEqualTo(1);
         assertThat(base.servant().outboundLinks().get(0).lost()).isZero();
     }
 

@@ -48,7 +48,7 @@ class OutboundLinkTest {
                 return batch.firstSeq + batch.values.length;
             }
         }));
-        link = new OutboundLink(1, "test", sink, new LinkSettings(2, 64, 1024, 100), SILENT);
+        link = new OutboundLink(1, "test#1#1", "test", sink, new LinkSettings(2, 64, 1024, 100), SILENT);
 
         for (long i = 0; i < 10_000; i++) {
             link.offer(i);
@@ -78,7 +78,7 @@ class OutboundLinkTest {
                 return batch.firstSeq + batch.values.length;
             }
         }));
-        link = new OutboundLink(2, "stuck", sink, new LinkSettings(1, 4, 16, 100), SILENT);
+        link = new OutboundLink(2, "test#1#2", "stuck", sink, new LinkSettings(1, 4, 16, 100), SILENT);
 
         long start = System.nanoTime();
         for (long i = 0; i < 100; i++) {

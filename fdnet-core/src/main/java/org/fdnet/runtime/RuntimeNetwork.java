@@ -338,6 +338,20 @@ public final class RuntimeNetwork implements AutoCloseable {
         held = heldNext;
         Rewiring.apply(relations.values(), datas, links, held, plan, toRequest, events);
         remoteLinks = remoteLinksOf(plan, prepared.brokenStandIns());
+        // Periods start only now: a timer started before the wiring is committed can fire a Relation
+        // that does not see its inputs yet, which then fails ("reads 0 inputs").
+        for (NodeRef ref : prepared.relations().keySet()) {
+            startPeriod(relations.get(ref));
+        }
+    }
+
+    private void startPeriod(RelationNode node) {
+        if (node != null && node.periodMillis > 0) {
+            node.periodic = timer.scheduleAtFixedRate(() -> {
+                node.periodDue.set(true);
+                flow.requestOnPool(node);
+            }, node.periodMillis, node.periodMillis, TimeUnit.MILLISECONDS);
+        }
     }
 
     /** Destroys what the plan no longer wants or replaces; returns the Datas removed. */
@@ -407,12 +421,6 @@ public final class RuntimeNetwork implements AutoCloseable {
             events.named(id, NodeKind.RELATION, ref);
             events.command(source, NetworkCommand.CREATE, Integer.toString(id), "proc");
             relations.put(ref, node);
-            if (node.periodMillis > 0) {
-                node.periodic = timer.scheduleAtFixedRate(() -> {
-                    node.periodDue.set(true);
-                    flow.requestOnPool(node);
-                }, node.periodMillis, node.periodMillis, TimeUnit.MILLISECONDS);
-            }
             toRequest.add(node);
         }
     }

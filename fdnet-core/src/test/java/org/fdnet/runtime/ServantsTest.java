@@ -67,8 +67,9 @@ class ServantsTest {
         try (RuntimeNetwork net = start(n, sink)) {
             Controller c = net.controller();
             assertThat(c.apply("plug a wheel sensor", NetworkEdits.addNode("main", data("Wheel", "DoubleSensor"))).executed()).isTrue();
-            eventually("a filter for Wheel", () -> c.value(ref("Wheel filtered")) != null
-                    && c.relationState(ref("Wheel filter")) != null);
+            // wait until the filter has taken the sensor's initial 0, or the first push would be its first input
+            eventually("a filter for Wheel that has fired once", () -> c.value(ref("Wheel filtered")) != null
+                    && c.relationState(ref("Wheel filter")) != null && c.relationState(ref("Wheel filter")).firings() >= 1);
             DoubleSensor wheel = net.dataInstance(ref("Wheel"), DoubleSensor.class);
             wheel.push(8.0);
             quiet(net);

@@ -76,7 +76,8 @@ public final class LoggerConfig {
                     throw new IllegalArgumentException(s.key() + " must not be empty");
                 }
             }
-            case DATABASE_PORT, RECEIVER_PORT, SENDER_PORT -> range(s, v, 1, 65535);
+            case DATABASE_PORT -> range(s, v, 1, 65535);
+            case RECEIVER_PORT, SENDER_PORT -> range(s, v, 0, 65535); // 0: any free port (tests, benchmarks)
             case WRITER_DELAY -> range(s, v, 0, 3_600_000);
             case WRITER_BATCH_SIZE -> range(s, v, 1, 1_000_000);
             case WRITER_BATCH_TIMEOUT -> range(s, v, 1, 3_600_000);

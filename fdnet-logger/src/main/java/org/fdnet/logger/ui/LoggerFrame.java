@@ -24,6 +24,11 @@ public final class LoggerFrame {
 
     /** Opens the panel in a window (on the event thread); closing the window stops the logger and exits. */
     public static LoggerPanel open(LoggerConfig config, Path file) throws InterruptedException, InvocationTargetException {
+        return openWindow(config, file);
+    }
+
+    /** The same window; returns the panel (tests drive it). */
+    public static LoggerPanel openWindow(LoggerConfig config, Path file) throws InterruptedException, InvocationTargetException {
         AtomicReference<LoggerPanel> panel = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> {
             FlatLightLaf.setup();

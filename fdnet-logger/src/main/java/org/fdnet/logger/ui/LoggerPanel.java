@@ -57,6 +57,7 @@ public final class LoggerPanel extends JPanel {
         this.config = config;
         this.file = file;
         JTabbedPane pane = new JTabbedPane();
+        pane.setName("tabs");
         for (LoggerSetting.Panel p : LoggerSetting.Panel.values()) {
             SettingsTab tab = new SettingsTab(p, config);
             tabs.add(tab);
@@ -78,6 +79,9 @@ public final class LoggerPanel extends JPanel {
         start.setName("start");
         stop.setName("stop");
         status.setName("status");
+        cacheLabel.setName("cache");
+        rateLabel.setName("rates");
+        databaseLabel.setName("database");
         message.setName("message");
         stop.setEnabled(false);
         start.addActionListener(e -> startLogger());

@@ -22,7 +22,7 @@ final class MonitoredEventContainer extends EventContainer {
         List<MonitorSubscriber> subs = monitors.get(e.sourceId());
         if (subs != null && !subs.isEmpty()) {
             e.pendingMonitors = subs.size();
-            monitoredIndex.timeline(e.sourceId(), true).add(e);
+            monitoredIndex.add(e);
             for (MonitorSubscriber s : subs) {
                 s.offer(e);
             }

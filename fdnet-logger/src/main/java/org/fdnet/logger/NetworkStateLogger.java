@@ -35,6 +35,7 @@ public final class NetworkStateLogger implements AutoCloseable {
     private EmbeddedDatabase embedded;
     private EventStore store;
     private EventCache cache;
+    private SourceDirectory directory;
     private BatchWriter writer;
     private Thread writerThread;
     private TcpServer receiver;
@@ -67,7 +68,7 @@ public final class NetworkStateLogger implements AutoCloseable {
             }
             store = new EventStore(target);
             store.createSchema();
-            SourceDirectory directory = new SourceDirectory(store);
+            directory = new SourceDirectory(store);
             directory.load();
             cache = new EventCache(new CacheLimits(config.cacheCapacityBytes(), config.networkEventBytes(),
                     config.commandEventBytes(), config.criticalPercent(), config.normalPercent()));
@@ -110,6 +111,10 @@ public final class NetworkStateLogger implements AutoCloseable {
 
     public BatchWriter writer() {
         return writer;
+    }
+
+    public SourceDirectory directory() {
+        return directory;
     }
 
     public EventStore store() {

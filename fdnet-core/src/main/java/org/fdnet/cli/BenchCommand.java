@@ -1,5 +1,6 @@
 package org.fdnet.cli;
 
+import org.fdnet.bench.LoadBenchmark;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;
@@ -9,7 +10,8 @@ import picocli.CommandLine.Spec;
  * measured in the same run (the machine is shared and noisy: the ratios are what hold).
  */
 @Command(name = "bench", mixinStandardHelpOptions = true,
-        description = "Benchmarks; each prints its figures beside a baseline measured in the same run.")
+        description = "Benchmarks; each prints its figures beside a baseline measured in the same run.",
+        subcommands = LoadBenchmark.class)
 public final class BenchCommand implements Runnable {
     @Spec
     CommandSpec spec;

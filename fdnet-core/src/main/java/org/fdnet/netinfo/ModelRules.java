@@ -16,12 +16,21 @@ public final class ModelRules {
         if (name.indexOf('/') >= 0) {
             throw new EditRefusedException(what + " name '" + name + "' may not contain '/' (it separates module and node)");
         }
-        if (name.chars().anyMatch(Character::isISOControl)) {
+        if (hasControlCharacter(name)) {
             throw new EditRefusedException(what + " name '" + name + "' may not contain control characters (tabs, line breaks)");
         }
         if (!name.equals(name.strip())) {
             throw new EditRefusedException(what + " name '" + name + "' may not begin or end with white space");
         }
+    }
+
+    private static boolean hasControlCharacter(String name) {
+        for (int i = 0; i < name.length(); i++) {
+            if (Character.isISOControl(name.charAt(i))) {
+                return true;
+            }
+        }
+        return false;
     }
 
     public static void checkNode(NodeInfo node) {

@@ -1,11 +1,9 @@
 package org.fdnet.netinfo;
 
-import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Collections;
 import java.util.LinkedHashMap;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
@@ -123,18 +121,7 @@ public final class NetworkInfo {
 
     private Set<NodeRef> reach(NodeRef start, boolean down) {
         requireNode(start);
-        ConnectionIndex idx = index();
-        Set<NodeRef> seen = new LinkedHashSet<>();
-        ArrayDeque<NodeRef> queue = new ArrayDeque<>();
-        queue.add(start);
-        while (!queue.isEmpty()) {
-            for (NodeRef next : idx.next(queue.poll(), down)) {
-                if (seen.add(next)) {
-                    queue.add(next);
-                }
-            }
-        }
-        return seen;
+        return index().reach(start, down);
     }
 
     public ModuleCounts counts(String moduleName) {

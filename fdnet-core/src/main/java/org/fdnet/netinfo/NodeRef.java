@@ -21,6 +21,20 @@ public record NodeRef(String module, String node) implements Comparable<NodeRef>
         return new NodeRef(text.substring(0, slash), text.substring(slash + 1));
     }
 
+    /**
+     * Written out because NodeRef is the key of every index: a record's generated equals/hashCode go
+     * through method handles, which are slow until the JIT has compiled them (cold CLI runs).
+     */
+    @Override
+    public boolean equals(Object o) {
+        return this == o || o instanceof NodeRef other && node.equals(other.node) && module.equals(other.module);
+    }
+
+    @Override
+    public int hashCode() {
+        return module.hashCode() * 31 + node.hashCode();
+    }
+
     @Override
     public int compareTo(NodeRef other) {
         int byModule = module.compareTo(other.module);

@@ -4,9 +4,7 @@ import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.List;
 import org.fdnet.netinfo.NetworkInfo;
 
@@ -44,16 +42,7 @@ public final class NetworkRepository {
     /** Saves keeping a file's DOCTYPE and header comments: what {@code fdnet fmt} writes. */
     public static void save(NetworkInfo network, Path file, String doctypeSystemId, List<String> leadingComments)
             throws IOException {
-        Path dir = file.toAbsolutePath().getParent();
-        Path temp = Files.createTempFile(dir, "." + file.getFileName(), ".tmp");
-        try {
-            try (OutputStream out = Files.newOutputStream(temp)) {
-                write(network, out, doctypeSystemId, leadingComments);
-            }
-            Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } finally {
-            Files.deleteIfExists(temp);
-        }
+        AtomicFile.write(file, out -> write(network, out, doctypeSystemId, leadingComments));
     }
 
     public static void write(NetworkInfo network, OutputStream out, String doctypeSystemId,

@@ -1,0 +1,96 @@
+package org.fdnet.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+class CoreCommandsTest {
+    @TempDir
+    Path dir;
+
+    private final StringWriter output = new StringWriter();
+
+    private int fdnet(String... args) {
+        CommandLine cli = FdnetCommand.commandLine();
+        cli.setOut(new PrintWriter(output, true));
+        cli.setErr(new PrintWriter(output, true));
+        return cli.execute(args);
+    }
+
+    private Path write(String name, String text) throws Exception {
+        Path file = dir.resolve(name);
+        Files.writeString(file, text, StandardCharsets.UTF_8);
+        return file;
+    }
+
+    @Test
+    void validateShouldAcceptValidFilesWithExitZero() {
+        assertThat(fdnet("validate", "../networks/arms.fdn", "../networks/arms.fdg")).isZero();
+        assertThat(output.toString()).contains("arms.fdn: valid (3 modules, 6 Datas").contains("arms.fdg: valid");
+    }
+
+    @Test
+    void validateShouldPrintOneFileLineColumnLinePerProblemAndExitOne() throws Exception {
+        Path bad = write("bad.fdn", "<?xml version=\"1.0\"?>\n<cnet>\n<robot/>\n<module name=\"A\" loadatstart=\"maybe\"/>\n</cnet>\n");
+        assertThat(fdnet("validate", "../networks/arms.fdn", bad.toString())).isEqualTo(1);
+        String[] lines = output.toString().strip().split("\n");
+        assertThat(lines[0]).contains("arms.fdn: valid");
+        for (int i = 1; i < lines.length; i++) {
+            assertThat(lines[i]).startsWith(bad + ":").matches(".+\\.fdn:\\d+:\\d+: .+");
+        }
+        assertThat(output.toString()).contains(bad + ":3:").contains(bad + ":4:");
+    }
+
+    @Test
+    void validateShouldNameAMissingFile() {
+        assertThat(fdnet("validate", "-q", dir.resolve("nope.fdn").toString())).isEqualTo(1);
+        assertThat(output.toString().strip()).endsWith("nope.fdn: no such file");
+    }
+
+    @Test
+    void infoShouldCountPerModule() {
+        assertThat(fdnet("info", "../networks/arms.fdn")).isZero();
+        assertThat(output.toString()).containsPattern("LeftArm\\s+start\\s+2\\s+2\\s+3\\s+2")
+                .containsPattern("RightArm\\s+later\\s+2\\s+3\\s+4\\s+2");
+    }
+
+    @Test
+    void fmtShouldRewriteToCanonicalFormAndCheckShouldThenPass() throws Exception {
+        Path messy = write("messy.fdn", "<?xml version=\"1.0\"?>\n<!-- header kept -->\n<cnet name=\"m\"><dstructure><name>D</name>"
+                + "<host>h</host><path></path><class>C</class></dstructure></cnet>");
+        assertThat(fdnet("fmt", "--check", messy.toString())).isEqualTo(1);
+        assertThat(fdnet("fmt", messy.toString())).isZero();
+        assertThat(Files.readString(messy)).startsWith("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<!DOCTYPE cnet SYSTEM \"cnet.dtd\">\n"
+                + "<!-- header kept -->\n<cnet name=\"m\">\n    <dstructure>\n");
+        assertThat(fdnet("fmt", "--check", messy.toString())).isZero();
+    }
+
+    @Test
+    void fmtShouldLeaveAnInvalidFileUntouched() throws Exception {
+        String text = "<cnet><robot/></cnet>";
+        Path bad = write("bad.fdn", text);
+        assertThat(fdnet("fmt", bad.toString())).isEqualTo(1);
+        assertThat(Files.readString(bad)).isEqualTo(text);
+    }
+
+    @Test
+    void everyCommandShouldOfferHelp() {
+        for (String command : new String[] {"validate", "info", "fmt", "bench"}) {
+            output.getBuffer().setLength(0);
+            assertThat(fdnet(command, "--help")).isZero();
+            assertThat(output.toString()).contains("Usage: fdnet " + command);
+        }
+    }
+
+    @Test
+    void theExampleNetworksShouldBeInCanonicalForm() {
+        assertThat(fdnet("fmt", "--check", "../networks/arms.fdn")).isZero();
+    }
+}

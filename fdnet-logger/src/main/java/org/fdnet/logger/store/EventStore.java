@@ -114,17 +114,17 @@ public final class EventStore implements AutoCloseable {
                         .text(n.paramsType()).number(n.time()).endRow();
             }
             copy(copy, "COPY netcommand_log (sourceid, sourcetype, command, params_id, params_type, time) FROM STDIN");
-            try (PreparedStatement ps = c.prepareStatement(
-                    "UPDATE fdnet_run SET committed_seq = ? WHERE run_id = ? AND committed_seq < ?")) {
-                for (Map.Entry<RunProgress, Long> r : lastSeq.entrySet()) {
-                    ps.setLong(1, r.getValue());
-                    ps.setInt(2, r.getKey().runId());
-                    ps.setLong(3, r.getValue());
-                    ps.addBatch();
-                }
-                ps.executeBatch();
+            // The watermarks and the COMMIT go in one round trip: the statements are integers only.
+            StringBuilder sql = new StringBuilder();
+            for (Map.Entry<RunProgress, Long> r : lastSeq.entrySet()) {
+                sql.append("UPDATE fdnet_run SET committed_seq = ").append(r.getValue()).append(" WHERE run_id = ")
+                        .append(r.getKey().runId()).append(" AND committed_seq < ").append(r.getValue()).append("; ");
             }
-            c.commit();
+            sql.append("COMMIT");
+            try (Statement st = c.createStatement()) {
+                st.execute(sql.toString());
+            }
+            c.commit(); // a no-op when the COMMIT above ended the transaction; commits otherwise
         } catch (SQLException | RuntimeException e) {
             rollbackQuietly(c, e);
             throw e;
@@ -132,6 +132,28 @@ public final class EventStore implements AutoCloseable {
         for (Map.Entry<RunProgress, Long> r : lastSeq.entrySet()) {
             r.getKey().committed(r.getValue());
         }
+    }
+
+    /**
+     * After a failure whose outcome is unknown (the connection died around the COMMIT): was the batch
+     * committed? Its runs' watermarks were updated in the same transaction, so the database knows.
+     */
+    public boolean wasCommitted(List<CachedEvent> batch) throws SQLException {
+        Map<RunProgress, Long> lastSeq = new HashMap<>();
+        for (CachedEvent e : batch) {
+            lastSeq.merge(e.run(), e.seq(), Math::max);
+        }
+        for (Map.Entry<RunProgress, Long> r : lastSeq.entrySet()) {
+            List<Long> stored = query("SELECT committed_seq FROM fdnet_run WHERE run_id = " + r.getKey().runId(),
+                    rs -> rs.getLong(1));
+            if (stored.isEmpty() || stored.get(0) < r.getValue()) {
+                return false;
+            }
+        }
+        for (Map.Entry<RunProgress, Long> r : lastSeq.entrySet()) {
+            r.getKey().committed(r.getValue());
+        }
+        return true;
     }
 
     private void copy(CopyManager copy, String sql) throws SQLException {

@@ -139,7 +139,11 @@ public final class BatchWriter implements Runnable {
                 if (connection == null) {
                     connection = store.openWriterConnection();
                 }
-                store.writeBatch(connection, batch, mappings);
+                if (failures > 0 && store.wasCommitted(batch)) {
+                    LOG.info("the batch whose commit failed was committed after all; not writing it again");
+                } else {
+                    store.writeBatch(connection, batch, mappings);
+                }
                 directory.saved(mappings);
                 cache.committed(batch);
                 batches++;

@@ -32,10 +32,26 @@ final class CopyRows {
 
     CopyRows number(long v) {
         separator();
-        String s = Long.toString(v);
-        ensure(s.length());
-        for (int i = 0; i < s.length(); i++) {
-            buf[len++] = (byte) s.charAt(i);
+        ensure(20);
+        if (v < 0) {
+            if (v == Long.MIN_VALUE) {
+                byte[] min = Long.toString(v).getBytes(StandardCharsets.US_ASCII);
+                System.arraycopy(min, 0, buf, len, min.length);
+                len += min.length;
+                return this;
+            }
+            buf[len++] = '-';
+            v = -v;
+        }
+        int start = len;
+        do {
+            buf[len++] = (byte) ('0' + (v % 10));
+            v /= 10;
+        } while (v != 0);
+        for (int i = start, j = len - 1; i < j; i++, j--) {
+            byte t = buf[i];
+            buf[i] = buf[j];
+            buf[j] = t;
         }
         return this;
     }

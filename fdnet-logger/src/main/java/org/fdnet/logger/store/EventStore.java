@@ -93,14 +93,14 @@ public final class EventStore implements AutoCloseable {
             saveMappings(c, mappings);
             saveNames(c, names);
             CopyManager copy = c.unwrap(PGConnection.class).getCopyAPI();
-            data.sort(KEY_ORDER);
+            sortByKey(data);
             rows.clear();
             for (CachedEvent e : data) {
                 DataValueEvent d = (DataValueEvent) e.event();
                 rows.number(d.sourceId()).number(d.time()).text(d.value()).number(d.type().code()).endRow();
             }
             copy(copy, "COPY datavalue_log (sourceid, time, value, typevalue) FROM STDIN");
-            relations.sort(KEY_ORDER);
+            sortByKey(relations);
             rows.clear();
             for (CachedEvent e : relations) {
                 RelationValueEvent r = (RelationValueEvent) e.event();
@@ -131,6 +131,31 @@ public final class EventStore implements AutoCloseable {
         }
         for (Map.Entry<RunProgress, Long> r : lastSeq.entrySet()) {
             r.getKey().committed(r.getValue());
+        }
+    }
+
+    /**
+     * Sorts by (sourceid, time). A source's events arrive in time order, so a stable sort by source alone
+     * (primitive keys: source id, then arrival index) is the key order; a late event (out of time order
+     * within its source) makes it fall back to the full comparison.
+     */
+    static void sortByKey(List<CachedEvent> events) {
+        int n = events.size();
+        long[] keys = new long[n];
+        for (int i = 0; i < n; i++) {
+            keys[i] = (long) events.get(i).sourceId() << 32 | i;
+        }
+        java.util.Arrays.sort(keys);
+        CachedEvent[] sorted = new CachedEvent[n];
+        for (int i = 0; i < n; i++) {
+            sorted[i] = events.get((int) keys[i]);
+            if (i > 0 && sorted[i].sourceId() == sorted[i - 1].sourceId() && sorted[i].time() < sorted[i - 1].time()) {
+                events.sort(KEY_ORDER);
+                return;
+            }
+        }
+        for (int i = 0; i < n; i++) {
+            events.set(i, sorted[i]);
         }
     }
 

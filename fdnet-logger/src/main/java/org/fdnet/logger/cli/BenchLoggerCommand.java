@@ -40,7 +40,7 @@ import picocli.CommandLine.Option;
 @Command(name = "logger", mixinStandardHelpOptions = true,
         description = "Benchmark the logger against raw COPY (same run, same database).")
 public final class BenchLoggerCommand implements Callable<Integer> {
-    @Option(names = "--events", defaultValue = "3000000", description = "events the producer sends at most (default 3,000,000)")
+    @Option(names = "--events", defaultValue = "100000000", description = "events the producer sends at most (default 100,000,000: --seconds decides)")
     long events;
 
     @Option(names = "--seconds", defaultValue = "60", description = "producer runs at most this long (default 60)")

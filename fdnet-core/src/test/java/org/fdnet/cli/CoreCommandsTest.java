@@ -2,26 +2,21 @@ package org.fdnet.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.fdnet.testing.CliRun;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
 class CoreCommandsTest {
     @TempDir
     Path dir;
 
-    private final StringWriter output = new StringWriter();
+    private final CliRun cli = new CliRun();
 
     private int fdnet(String... args) {
-        CommandLine cli = FdnetCommand.commandLine();
-        cli.setOut(new PrintWriter(output, true));
-        cli.setErr(new PrintWriter(output, true));
-        return cli.execute(args);
+        return cli.fdnet(args);
     }
 
     private Path write(String name, String text) throws Exception {
@@ -33,31 +28,31 @@ class CoreCommandsTest {
     @Test
     void validateShouldAcceptValidFilesWithExitZero() {
         assertThat(fdnet("validate", "../networks/arms.fdn", "../networks/arms.fdg")).isZero();
-        assertThat(output.toString()).contains("arms.fdn: valid (3 modules, 6 Datas").contains("arms.fdg: valid");
+        assertThat(cli.output()).contains("arms.fdn: valid (3 modules, 6 Datas").contains("arms.fdg: valid");
     }
 
     @Test
     void validateShouldPrintOneFileLineColumnLinePerProblemAndExitOne() throws Exception {
         Path bad = write("bad.fdn", "<?xml version=\"1.0\"?>\n<cnet>\n<robot/>\n<module name=\"A\" loadatstart=\"maybe\"/>\n</cnet>\n");
         assertThat(fdnet("validate", "../networks/arms.fdn", bad.toString())).isEqualTo(1);
-        String[] lines = output.toString().strip().split("\n");
+        String[] lines = cli.output().strip().split("\n");
         assertThat(lines[0]).contains("arms.fdn: valid");
         for (int i = 1; i < lines.length; i++) {
             assertThat(lines[i]).startsWith(bad + ":").matches(".+\\.fdn:\\d+:\\d+: .+");
         }
-        assertThat(output.toString()).contains(bad + ":3:").contains(bad + ":4:");
+        assertThat(cli.output()).contains(bad + ":3:").contains(bad + ":4:");
     }
 
     @Test
     void validateShouldNameAMissingFile() {
         assertThat(fdnet("validate", "-q", dir.resolve("nope.fdn").toString())).isEqualTo(1);
-        assertThat(output.toString().strip()).endsWith("nope.fdn: no such file");
+        assertThat(cli.output().strip()).endsWith("nope.fdn: no such file");
     }
 
     @Test
     void infoShouldCountPerModule() {
         assertThat(fdnet("info", "../networks/arms.fdn")).isZero();
-        assertThat(output.toString()).containsPattern("LeftArm\\s+start\\s+2\\s+2\\s+3\\s+2")
+        assertThat(cli.output()).containsPattern("LeftArm\\s+start\\s+2\\s+2\\s+3\\s+2")
                 .containsPattern("RightArm\\s+later\\s+2\\s+3\\s+4\\s+2");
     }
 
@@ -83,9 +78,9 @@ class CoreCommandsTest {
     @Test
     void everyCommandShouldOfferHelp() {
         for (String command : new String[] {"validate", "info", "fmt", "bench"}) {
-            output.getBuffer().setLength(0);
+            cli.clear();
             assertThat(fdnet(command, "--help")).isZero();
-            assertThat(output.toString()).contains("Usage: fdnet " + command);
+            assertThat(cli.output()).contains("Usage: fdnet " + command);
         }
     }
 

@@ -1,0 +1,75 @@
+package org.fdnet.runtime;
+
+import org.fdnet.event.ValueType;
+
+/**
+ * The base class of every Data node: a typed value and its timestamp. A subclass fixes the type and may
+ * check or shape values ({@link #accept}); the engine stores the value, stamps it, tells the readers.
+ *
+ * <p>A subclass needs a public no-argument constructor. {@link #init} runs once, before the Data is
+ * wired; the parameter {@code initial}, when present, is the first value (see {@link #initialValue}).
+ * Methods are called by the engine only; a Data never holds a lock of its own and never blocks.
+ */
+public abstract class Data {
+    private volatile DataPort port;
+
+    /** The type of every value this Data holds. */
+    public abstract ValueType type();
+
+    /** Reads parameters; throw {@link ParameterException} (via {@link NodeParameters}) on a bad one. */
+    protected void init(NodeParameters parameters) throws Exception {
+    }
+
+    /** The value before anyone writes: parameter {@code initial} when given, else the type's zero. */
+    protected Value initialValue(NodeParameters parameters) {
+        String initial = parameters.text("initial");
+        if (initial == null) {
+            return Value.zero(type());
+        }
+        try {
+            return Value.parse(type(), initial);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(parameters.node() + ": parameter 'initial' = '" + initial + "' is not a "
+                    + type().name().toLowerCase() + " value", e);
+        }
+    }
+
+    /**
+     * Checks or shapes a value about to be written (already converted to {@link #type()}): return it, a
+     * corrected value (e.g. clamped), or throw IllegalArgumentException to refuse it. Called on the
+     * writer's thread, outside any lock; must be fast and free of side effects.
+     */
+    protected Value accept(Value proposed) {
+        return proposed;
+    }
+
+    /** Called when the Data leaves the running network (module unloaded, node destroyed, network stopped). */
+    protected void close() {
+    }
+
+    /** The current value (the engine's, always the latest committed one). */
+    public final Value value() {
+        DataPort p = port;
+        return p == null ? null : p.current();
+    }
+
+    /** Writes a value from outside the dataflow (a sensor, a device); see {@link SensorData}. */
+    protected final void publish(Value value) {
+        DataPort p = port;
+        if (p == null) {
+            throw new IllegalStateException(getClass().getSimpleName() + " is not part of a running network");
+        }
+        p.publish(value);
+    }
+
+    final void bind(DataPort newPort) {
+        this.port = newPort;
+    }
+
+    /** What a Data sees of the engine: its current value and a way in for outside values. */
+    interface DataPort {
+        Value current();
+
+        void publish(Value value);
+    }
+}

@@ -1,0 +1,101 @@
+package org.fdnet.runtime;
+
+import org.fdnet.netinfo.NodeInfo;
+import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.loading.NodeClassException;
+import org.fdnet.runtime.loading.NodeClassResolver;
+
+/**
+ * Makes running nodes from definitions: resolves the class, constructs it, runs {@code init} with the
+ * parameters, reads the period. Every failure is a {@link NodeFailure} whose message names the node.
+ */
+final class NodeFactory {
+    private final NodeClassResolver resolver;
+    private final Dataflow flow;
+
+    NodeFactory(NodeClassResolver resolver, Dataflow flow) {
+        this.resolver = resolver;
+        this.flow = flow;
+    }
+
+    /** A prepared Data: constructed and initialised, with its first value; not yet part of the network. */
+    record PreparedData(Data data, Value initial) {
+    }
+
+    PreparedData prepareData(NodeRef ref, NodeInfo info) throws NodeFailure {
+        Data data = (Data) construct(ref, info);
+        NodeParameters params = NodeParameters.of(ref, info);
+        try {
+            data.init(params);
+            Value initial = data.initialValue(params).convertTo(data.type());
+            return new PreparedData(data, initial);
+        } catch (Exception e) {
+            throw new NodeFailure(message(ref, info, e), e);
+        }
+    }
+
+    Relation prepareRelation(NodeRef ref, NodeInfo info) throws NodeFailure {
+        Relation relation = (Relation) construct(ref, info);
+        try {
+            periodOf(ref, info);
+            relation.init(NodeParameters.of(ref, info));
+            return relation;
+        } catch (Exception e) {
+            throw new NodeFailure(message(ref, info, e), e);
+        }
+    }
+
+    DataNode dataNode(int id, NodeRef ref, NodeInfo info, PreparedData prepared, boolean standIn) {
+        DataNode node = new DataNode(id, ref, info, prepared.data(), standIn, flow);
+        prepared.data().bind(node);
+        return node;
+    }
+
+    RelationNode relationNode(int id, NodeRef ref, NodeInfo info, Relation relation) {
+        long period = periodOf(ref, info);
+        NodeParameters p = NodeParameters.of(ref, info);
+        boolean onInput = p.booleanValue("onInput", period == 0 || p.has("triggers"));
+        java.util.Set<String> triggers = null;
+        if (p.has("triggers")) {
+            triggers = new java.util.HashSet<>();
+            for (String t : p.text("triggers").split(",")) {
+                if (!t.isBlank()) {
+                    triggers.add(t.strip());
+                }
+            }
+        }
+        return new RelationNode(id, ref, info, relation, period, onInput, triggers, flow);
+    }
+
+    /** The {@code period} parameter in milliseconds, 0 when absent. */
+    static long periodOf(NodeRef ref, NodeInfo info) {
+        NodeParameters p = NodeParameters.of(ref, info);
+        long period = p.longValue("period", 0);
+        if (period < 0) {
+            throw p.invalid("period", "must be a positive number of milliseconds, was " + period);
+        }
+        return period;
+    }
+
+    private Object construct(NodeRef ref, NodeInfo info) throws NodeFailure {
+        try {
+            return resolver.instantiate(ref, info);
+        } catch (NodeClassException e) {
+            throw new NodeFailure(e.getMessage(), e);
+        }
+    }
+
+    private static String message(NodeRef ref, NodeInfo info, Exception e) {
+        String text = e.getMessage() == null ? e.toString() : e.getMessage();
+        return text.startsWith(ref.toString()) ? text : ref + " (" + info.className() + "): " + text;
+    }
+
+    /** A node that cannot be made. */
+    static final class NodeFailure extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        NodeFailure(String message, Throwable cause) {
+            super(message, cause);
+        }
+    }
+}

@@ -1,0 +1,31 @@
+package org.fdnet.runtime;
+
+/**
+ * The base class of every Relation node: a processing agent that reads the Datas it is connected to by
+ * Readers and writes those it is connected to by Writers.
+ *
+ * <p>Life of an instance: public no-argument constructor → {@link #init} once with its parameters →
+ * {@link #compute} once when it starts, then each time a Data it reads changes (not by its own write)
+ * and/or every {@code period} ms when the node has a {@code period} parameter → {@link #close}. The
+ * engine never runs one instance twice at a time, so a Relation keeps state in plain fields. An
+ * exception from {@code compute} marks the Relation FAILED (its writes of that firing are dropped); a
+ * parameter change or a module reload makes a fresh instance.
+ */
+public abstract class Relation {
+    /** Reads parameters; throw {@link ParameterException} (via {@link NodeParameters}) on a bad one. */
+    protected void init(NodeParameters parameters) throws Exception {
+    }
+
+    /**
+     * One firing: read inputs from {@code context} (a consistent snapshot), write outputs to it (they
+     * become visible together when this returns normally).
+     */
+    protected abstract void compute(RelationContext context) throws Exception;
+
+    /**
+     * The instance leaves the network (failed, replaced, unloaded, destroyed, stopped). It may be called
+     * while its last firing is still finishing on another thread: release resources, do not wait for it.
+     */
+    protected void close() {
+    }
+}

@@ -1,0 +1,582 @@
+package org.fdnet.runtime;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Function;
+import org.fdnet.event.EventSink;
+import org.fdnet.event.NetworkCommand;
+import org.fdnet.netinfo.ConnectionKind;
+import org.fdnet.netinfo.EditRefusedException;
+import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.netinfo.NodeInfo;
+import org.fdnet.netinfo.NodeKind;
+import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.loading.NodeClassResolver;
+import org.fdnet.runtime.servant.Servants;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * A running network on this host. Its structure always matches a definition ({@link NetworkInfo}), the
+ * set of loaded modules and the {@link Placement}: every structural request edits a copy of the
+ * definition, {@link StructurePlan plans} what must run, constructs every new node (refusing the request,
+ * with nothing changed, if one cannot be made), and then — under the structure lock — commits: drops
+ * links, destroys and creates nodes, makes links, rewires Relations, reports statuses, and finally, after
+ * the lock, asks the Relations that start or were rewired to fire. Firings never take the structure lock,
+ * so a Relation may reshape the network from {@code compute} (its Servants) without deadlock.
+ */
+public final class RuntimeNetwork implements AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(RuntimeNetwork.class);
+
+    private final RuntimeOptions options;
+    private final EventPublisher events;
+    private final Dataflow flow;
+    private final Scheduler scheduler;
+    private final ScheduledExecutorService timer;
+    private final NodeClassResolver resolver;
+    private final NodeFactory factory;
+    private final ReentrantLock structure = new ReentrantLock();
+    private final List<ChangeListener> listeners = new CopyOnWriteArrayList<>();
+    private final Map<NodeRef, Integer> ids = new ConcurrentHashMap<>();
+    private final AtomicInteger nextId = new AtomicInteger(1);
+    private final Map<NodeRef, DataNode> datas = new ConcurrentHashMap<>();
+    private final Map<NodeRef, RelationNode> relations = new ConcurrentHashMap<>();
+    private final Map<Integer, Controller> controllers = new ConcurrentHashMap<>();
+    /** Value observers by Data name: they follow the Data through unloads, reloads and parameter changes. */
+    private final Map<NodeRef, List<DataValueObserver>> observers = new ConcurrentHashMap<>();
+
+    // guarded by structure
+    private NetworkInfo definition;
+    private Set<String> loaded = new LinkedHashSet<>();
+    private Set<String> held = new LinkedHashSet<>();
+    private Set<LiveLink> links = new LinkedHashSet<>();
+    private volatile List<RemoteLink> remoteLinks = List.of();
+    private volatile boolean closed;
+
+    private RuntimeNetwork(NetworkInfo definition, RuntimeOptions options) {
+        options.seal();
+        this.options = options;
+        this.events = new EventPublisher(options.clock());
+        options.sinks().forEach(events::add);
+        this.flow = new Dataflow(events);
+        this.scheduler = new Scheduler(flow, options.workerThreads(), options.drainBudget(), options.inlineCallers());
+        flow.attach(scheduler);
+        this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
+            Thread t = new Thread(r, "fdnet-period");
+            t.setDaemon(true);
+            return t;
+        });
+        this.resolver = new NodeClassResolver(options.classLoading(), Data.class, Relation.class);
+        this.factory = new NodeFactory(resolver, flow);
+        this.definition = new NetworkInfo(definition.name());
+    }
+
+    /**
+     * Starts {@code definition} (copied): modules marked {@code loadatstart} are loaded.
+     *
+     * @throws RuntimeStartException listing every node that cannot be made; nothing keeps running
+     */
+    public static RuntimeNetwork start(NetworkInfo definition, RuntimeOptions options) throws RuntimeStartException {
+        RuntimeNetwork network = new RuntimeNetwork(definition, options);
+        network.flow.servants(network::servantsOf);
+        Set<String> atStart = new LinkedHashSet<>();
+        for (ModuleInfo m : definition.modules()) {
+            if (m.loadAtStart()) {
+                atStart.add(m.name());
+            }
+        }
+        NetworkInfo copy = definition.copy();
+        List<NetworkCommandDraft> loads = atStart.stream()
+                .map(m -> new NetworkCommandDraft(NetworkCommand.LOAD, m)).toList();
+        ChangeOutcome outcome = network.change("start " + (definition.name() == null ? "network" : definition.name()),
+                EventPublisher.CONTROLLER, n -> replaceAll(n, copy), atStart, Set.of(), Set.of(), loads);
+        if (!outcome.executed()) {
+            network.close();
+            throw new RuntimeStartException(Arrays.asList(outcome.reason().split("\n")));
+        }
+        return network;
+    }
+
+    private static void replaceAll(NetworkInfo target, NetworkInfo source) {
+        for (ModuleInfo m : source.modules()) {
+            if (!m.isMain()) {
+                target.addModule(m.name(), m.loadAtStart());
+            }
+            for (NodeInfo n : m.nodes()) {
+                target.addNode(m.name(), n);
+            }
+        }
+        for (ModuleInfo m : source.modules()) {
+            for (var c : m.connections()) {
+                target.addConnection(m.name(), c);
+            }
+        }
+    }
+
+    /** The controller of this network (events it causes name source 0, the controller). */
+    public Controller controller() {
+        return controllerFor(EventPublisher.CONTROLLER);
+    }
+
+    /** A controller whose structural events name {@code sourceId} as their source (a Relation using Servants). */
+    public Controller controllerFor(int sourceId) {
+        return controllers.computeIfAbsent(sourceId, id -> new NetworkController(this, id));
+    }
+
+    private Servants servantsOf(RelationNode node) {
+        return new Servants(this, node.ref, node.id);
+    }
+
+    public void addSink(EventSink sink) {
+        events.add(sink);
+    }
+
+    public void removeSink(EventSink sink) {
+        events.remove(sink);
+    }
+
+    /**
+     * The running instance of a Data, e.g. a {@link SensorData} a driver pushes into; {@code null} when the
+     * Data is not running here. A new instance replaces it when its module reloads or its parameters change.
+     *
+     * @throws IllegalArgumentException when the instance is not a {@code type}
+     */
+    public <T extends Data> T dataInstance(NodeRef ref, Class<T> type) {
+        DataNode d = dataNode(ref);
+        if (d == null) {
+            return null;
+        }
+        if (!type.isInstance(d.data)) {
+            throw new IllegalArgumentException(ref + " is a " + d.data.getClass().getName() + ", not a " + type.getName());
+        }
+        return type.cast(d.data);
+    }
+
+    /** Reads the current definition under the structure lock (no copy): for Servants and queries. */
+    public <T> T readDefinition(Function<NetworkInfo, T> reader) {
+        structure.lock();
+        try {
+            return reader.apply(definition);
+        } finally {
+            structure.unlock();
+        }
+    }
+
+    /** Waits until no Relation is queued or running; true if that happened within the timeout. */
+    public boolean awaitQuiet(long timeout, TimeUnit unit) throws InterruptedException {
+        return flow.awaitQuiet(timeout, unit);
+    }
+
+    /** Total firings and Data writes since start. */
+    public long firings() {
+        return flow.firings();
+    }
+
+    public long writes() {
+        return flow.writes();
+    }
+
+    public int workerThreads() {
+        return scheduler.threads();
+    }
+
+    // ------------------------------------------------------------------ change requests
+
+    record NetworkCommandDraft(NetworkCommand command, String module) {
+    }
+
+    /**
+     * The one way the structure changes. {@code nextLoaded}/{@code nextHeld} may be null for "as now".
+     * Modules that no longer exist drop out of both; {@code main} is always loaded.
+     */
+    ChangeOutcome change(String description, int source, NetworkEdit edit, Set<String> nextLoaded,
+                         Set<String> nextHeld, Set<NodeRef> restart, List<NetworkCommandDraft> moduleCommands) {
+        Set<RelationNode> toRequest = new LinkedHashSet<>();
+        List<SensorData> toStart = new ArrayList<>();
+        ChangeOutcome outcome;
+        structure.lock();
+        try {
+            if (closed) {
+                return settle(ChangeOutcome.failed(description, "the network is stopped"));
+            }
+            NetworkInfo candidate = definition.copy();
+            if (edit != null) {
+                edit.applyTo(candidate);
+            }
+            Set<String> loadedNext = new LinkedHashSet<>(nextLoaded == null ? loaded : nextLoaded);
+            loadedNext.add(ModuleInfo.MAIN);
+            loadedNext.removeIf(m -> candidate.module(m) == null);
+            Set<String> heldNext = new LinkedHashSet<>(nextHeld == null ? held : nextHeld);
+            heldNext.retainAll(loadedNext);
+            StructurePlan plan = StructurePlan.of(candidate, loadedNext, options.placement());
+            Prepared prepared = prepare(plan, restart);
+            commit(source, candidate, loadedNext, heldNext, plan, prepared, moduleCommands, toRequest, toStart);
+            outcome = ChangeOutcome.executed(description);
+        } catch (EditRefusedException | IllegalArgumentException e) {
+            outcome = ChangeOutcome.failed(description, e.getMessage());
+        } finally {
+            structure.unlock();
+        }
+        for (SensorData s : toStart) {
+            try {
+                s.start();
+            } catch (RuntimeException e) {
+                LOG.warn("sensor {} failed to start", s, e);
+            }
+        }
+        for (RelationNode r : toRequest) {
+            flow.request(r);
+        }
+        return settle(outcome);
+    }
+
+    private ChangeOutcome settle(ChangeOutcome outcome) {
+        if (!outcome.executed()) {
+            LOG.info("change refused: {}", outcome);
+        }
+        for (ChangeListener l : listeners) {
+            try {
+                l.changeSettled(outcome);
+            } catch (RuntimeException e) {
+                LOG.warn("change listener {} failed", l, e);
+            }
+        }
+        return outcome;
+    }
+
+    /** New instances for every node to create or replace, made before anything changes. */
+    private record Prepared(Map<NodeRef, NodeFactory.PreparedData> datas, Map<NodeRef, Relation> relations,
+                            Map<NodeRef, String> brokenStandIns) {
+    }
+
+    private Prepared prepare(StructurePlan plan, Set<NodeRef> restart) {
+        Map<NodeRef, NodeFactory.PreparedData> newDatas = new LinkedHashMap<>();
+        Map<NodeRef, Relation> newRelations = new LinkedHashMap<>();
+        Map<NodeRef, String> broken = new HashMap<>();
+        List<String> problems = new ArrayList<>();
+        for (Map.Entry<NodeRef, NodeInfo> e : plan.local.entrySet()) {
+            NodeRef ref = e.getKey();
+            NodeInfo info = e.getValue();
+            try {
+                if (info.kind() == NodeKind.DATA) {
+                    DataNode live = datas.get(ref);
+                    if (live == null || live.standIn || !live.info.equals(info) || restart.contains(ref)) {
+                        newDatas.put(ref, factory.prepareData(ref, info));
+                    }
+                } else {
+                    RelationNode live = relations.get(ref);
+                    if (live == null || !live.info.equals(info) || restart.contains(ref)) {
+                        newRelations.put(ref, factory.prepareRelation(ref, info));
+                    }
+                }
+            } catch (NodeFactory.NodeFailure failure) {
+                problems.add(failure.getMessage());
+            } catch (RuntimeException failure) {
+                problems.add(ref + " (" + info.className() + "): " + failure);
+            }
+        }
+        for (Map.Entry<NodeRef, NodeInfo> e : plan.standIns.entrySet()) {
+            DataNode live = datas.get(e.getKey());
+            if (live == null || !live.standIn || !live.info.equals(e.getValue())) {
+                try {
+                    newDatas.put(e.getKey(), factory.prepareData(e.getKey(), e.getValue()));
+                } catch (NodeFactory.NodeFailure | RuntimeException failure) {
+                    broken.put(e.getKey(), failure.getMessage());
+                }
+            }
+        }
+        if (!problems.isEmpty()) {
+            throw new EditRefusedException(String.join("\n", problems));
+        }
+        return new Prepared(newDatas, newRelations, broken);
+    }
+
+    private void commit(int source, NetworkInfo candidate, Set<String> loadedNext, Set<String> heldNext,
+                        StructurePlan plan, Prepared prepared, List<NetworkCommandDraft> moduleCommands,
+                        Set<RelationNode> toRequest, List<SensorData> toStart) {
+        for (NetworkCommandDraft c : moduleCommands) {
+            events.command(source, c.command(), c.module(), "module");
+        }
+        Set<LiveLink> wanted = new LinkedHashSet<>();
+        for (LiveLink l : plan.links) {
+            if (!prepared.brokenStandIns().containsKey(l.data())) {
+                wanted.add(l);
+            }
+        }
+        // links that go: gone from the plan, or one of their ends is replaced
+        for (LiveLink l : links) {
+            boolean replaced = prepared.datas().containsKey(l.data()) || prepared.relations().containsKey(l.relation());
+            if (!wanted.contains(l) || replaced) {
+                events.command(source, NetworkCommand.DISCONNECT, linkId(l), linkType(l));
+            }
+        }
+        Map<NodeRef, DataNode> removed = destroyNodes(source, plan, prepared);
+        createNodes(source, plan, prepared, removed, toRequest, toStart);
+        for (LiveLink l : wanted) {
+            boolean replaced = prepared.datas().containsKey(l.data()) || prepared.relations().containsKey(l.relation());
+            if (!links.contains(l) || replaced) {
+                events.command(source, NetworkCommand.CONNECT, linkId(l), linkType(l));
+            }
+        }
+        links = wanted;
+        definition = candidate;
+        loaded = loadedNext;
+        held = heldNext;
+        Rewiring.apply(relations.values(), datas, links, held, plan, toRequest, events);
+        remoteLinks = remoteLinksOf(plan, prepared.brokenStandIns());
+    }
+
+    /** Destroys what the plan no longer wants or replaces; returns the Datas removed. */
+    private Map<NodeRef, DataNode> destroyNodes(int source, StructurePlan plan, Prepared prepared) {
+        Map<NodeRef, DataNode> removed = new HashMap<>();
+        for (RelationNode r : List.copyOf(relations.values())) {
+            if (!plan.local.containsKey(r.ref) || prepared.relations().containsKey(r.ref)) {
+                relations.remove(r.ref);
+                r.alive = false;
+                if (r.periodic != null) {
+                    r.periodic.cancel(false);
+                }
+                if (r.status != RelationStatus.FAILED) {
+                    r.status = RelationStatus.STOPPED;
+                    closeQuietly(r);
+                }
+                events.command(source, NetworkCommand.DESTROY, Integer.toString(r.id), "proc");
+            }
+        }
+        for (DataNode d : List.copyOf(datas.values())) {
+            boolean wantedHere = d.standIn ? plan.standIns.containsKey(d.ref) : plan.local.containsKey(d.ref);
+            if (!wantedHere || prepared.datas().containsKey(d.ref)) {
+                datas.remove(d.ref);
+                removed.put(d.ref, d);
+                retire(d);
+                if (!d.standIn) {
+                    events.command(source, NetworkCommand.DESTROY, Integer.toString(d.id), "data");
+                }
+            }
+        }
+        return removed;
+    }
+
+    private void createNodes(int source, StructurePlan plan, Prepared prepared, Map<NodeRef, DataNode> removed,
+                             Set<RelationNode> toRequest, List<SensorData> toStart) {
+        for (Map.Entry<NodeRef, NodeFactory.PreparedData> e : prepared.datas().entrySet()) {
+            NodeRef ref = e.getKey();
+            boolean standIn = plan.standIns.containsKey(ref);
+            NodeInfo info = standIn ? plan.standIns.get(ref) : plan.local.get(ref);
+            int id = idOf(ref);
+            DataNode node = factory.dataNode(id, ref, info, e.getValue(), standIn);
+            for (DataValueObserver o : observers.getOrDefault(ref, List.of())) {
+                node.addObserver(o);
+            }
+            // a Data re-made by a parameter change keeps its value unless its type or initial value changed
+            DataNode old = removed.get(ref);
+            Value first = e.getValue().initial();
+            if (old != null && old.type == node.type && old.value != null
+                    && java.util.Objects.equals(old.info.parameter("initial"), info.parameter("initial"))) {
+                first = old.value;
+            }
+            // a stand-in is named (so connection events about it resolve) but never "created": its host creates it
+            events.named(id, NodeKind.DATA, ref);
+            if (!standIn) {
+                events.command(source, NetworkCommand.CREATE, Integer.toString(id), "data");
+            }
+            flow.initialize(node, first);
+            datas.put(ref, node);
+            if (node.data instanceof SensorData s) {
+                toStart.add(s);
+            }
+        }
+        for (Map.Entry<NodeRef, Relation> e : prepared.relations().entrySet()) {
+            NodeRef ref = e.getKey();
+            int id = idOf(ref);
+            RelationNode node = factory.relationNode(id, ref, plan.local.get(ref), e.getValue());
+            events.named(id, NodeKind.RELATION, ref);
+            events.command(source, NetworkCommand.CREATE, Integer.toString(id), "proc");
+            relations.put(ref, node);
+            if (node.periodMillis > 0) {
+                node.periodic = timer.scheduleAtFixedRate(() -> {
+                    node.periodDue.set(true);
+                    flow.requestOnPool(node);
+                }, node.periodMillis, node.periodMillis, TimeUnit.MILLISECONDS);
+            }
+            toRequest.add(node);
+        }
+    }
+
+    private List<RemoteLink> remoteLinksOf(StructurePlan plan, Map<NodeRef, String> broken) {
+        List<RemoteLink> result = new ArrayList<>();
+        for (StructurePlan.RemoteDraft d : plan.remote) {
+            String problem = d.remoteEnd().equals("data") ? broken.get(d.connection().data()) : null;
+            if (problem != null) {
+                LOG.warn("{} cannot be made here: {}", d.connection(), problem);
+            }
+            result.add(new RemoteLink(d.connection(), d.remoteEnd(), d.host(), d.remoteEnd().equals("data"), problem));
+        }
+        return List.copyOf(result);
+    }
+
+    private int idOf(NodeRef ref) {
+        return ids.computeIfAbsent(ref, k -> nextId.getAndIncrement());
+    }
+
+    private String linkId(LiveLink l) {
+        return idOf(l.data()) + ">" + idOf(l.relation());
+    }
+
+    private static String linkType(LiveLink l) {
+        return l.kind() == ConnectionKind.READER ? "reader" : "writer";
+    }
+
+    private static void closeQuietly(RelationNode r) {
+        try {
+            r.relation.close();
+        } catch (RuntimeException e) {
+            LOG.warn("{}: close failed", r.ref, e);
+        }
+    }
+
+    private static void stopQuietly(SensorData s) {
+        try {
+            s.stop();
+        } catch (RuntimeException e) {
+            LOG.warn("sensor {} failed to stop", s, e);
+        }
+    }
+
+    // ------------------------------------------------------------------ queries for the controller
+
+    Set<String> loaded() {
+        return readDefinition(d -> java.util.Collections.unmodifiableSet(new LinkedHashSet<>(loaded)));
+    }
+
+    Set<String> held() {
+        return readDefinition(d -> java.util.Collections.unmodifiableSet(new LinkedHashSet<>(held)));
+    }
+
+    DataNode dataNode(NodeRef ref) {
+        DataNode d = datas.get(ref);
+        return d == null || !d.alive ? null : d;
+    }
+
+    RelationNode relationNode(NodeRef ref) {
+        return relations.get(ref);
+    }
+
+    /** Running Relations in definition order. */
+    List<RelationNode> relationsInOrder() {
+        return readDefinition(def -> {
+            List<RelationNode> result = new ArrayList<>();
+            for (ModuleInfo m : def.modules()) {
+                for (NodeInfo n : m.nodes()) {
+                    RelationNode r = relations.get(new NodeRef(m.name(), n.name()));
+                    if (r != null) {
+                        result.add(r);
+                    }
+                }
+            }
+            return result;
+        });
+    }
+
+    void write(NodeRef ref, Value value) {
+        DataNode d = dataNode(ref);
+        if (d == null) {
+            throw new IllegalArgumentException(ref + " is not a Data running here");
+        }
+        flow.write(d, value, null);
+    }
+
+    AutoCloseable observe(NodeRef ref, DataValueObserver observer) {
+        observers.computeIfAbsent(ref, k -> new CopyOnWriteArrayList<>()).add(observer);
+        DataNode d = datas.get(ref);
+        if (d != null) {
+            d.addObserver(observer);
+        }
+        return () -> {
+            List<DataValueObserver> list = observers.get(ref);
+            if (list != null) {
+                list.remove(observer);
+            }
+            DataNode current = datas.get(ref);
+            if (current != null) {
+                current.removeObserver(observer);
+            }
+        };
+    }
+
+    int idIfKnown(NodeRef ref) {
+        Integer id = ids.get(ref);
+        return id == null ? -1 : id;
+    }
+
+    List<RemoteLink> remoteLinks() {
+        return remoteLinks;
+    }
+
+    NetworkInfo definitionCopy() {
+        return readDefinition(NetworkInfo::copy);
+    }
+
+    void addListener(ChangeListener l) {
+        listeners.add(l);
+    }
+
+    void removeListener(ChangeListener l) {
+        listeners.remove(l);
+    }
+
+    /** Stops the network: no more firings; every node closes; sinks are flushed (not closed: the caller owns them). */
+    @Override
+    public void close() {
+        structure.lock();
+        try {
+            if (closed) {
+                return;
+            }
+            closed = true;
+        } finally {
+            structure.unlock();
+        }
+        timer.shutdownNow();
+        scheduler.close();
+        for (RelationNode r : relations.values()) {
+            r.alive = false;
+            if (r.status != RelationStatus.FAILED) {
+                r.status = RelationStatus.STOPPED;
+                closeQuietly(r);
+            }
+        }
+        for (DataNode d : datas.values()) {
+            retire(d);
+        }
+        events.flush();
+        resolver.close();
+    }
+
+    /** A Data leaves: no more writes, its sensor stops, its resources close. */
+    private static void retire(DataNode d) {
+        d.alive = false;
+        if (d.data instanceof SensorData s) {
+            stopQuietly(s);
+        }
+        try {
+            d.data.close();
+        } catch (RuntimeException e) {
+            LOG.warn("{}: close failed", d.ref, e);
+        }
+    }
+}

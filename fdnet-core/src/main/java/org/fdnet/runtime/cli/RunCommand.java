@@ -1,0 +1,253 @@
+package org.fdnet.runtime.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.netinfo.NodeInfo;
+import org.fdnet.netinfo.NodeKind;
+import org.fdnet.netinfo.NodeRef;
+import org.fdnet.netinfo.xml.NetworkFileException;
+import org.fdnet.netinfo.xml.NetworkRepository;
+import org.fdnet.runtime.ChangeOutcome;
+import org.fdnet.runtime.Controller;
+import org.fdnet.runtime.RelationState;
+import org.fdnet.runtime.RelationStatus;
+import org.fdnet.runtime.RuntimeNetwork;
+import org.fdnet.runtime.RuntimeOptions;
+import org.fdnet.runtime.RuntimeStartException;
+import org.fdnet.runtime.Value;
+import org.fdnet.runtime.loading.ClassLoadingPolicy;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code fdnet run FILE}: runs a network on this machine, prints a status line each second and a summary
+ * at the end (values computed per Data, events by kind, Relations and their states, failures with causes).
+ * Exit 0 when it ran, 1 for a bad file or a network that cannot start, 2 for a bad {@code --set}/{@code --load}.
+ */
+@Command(name = "run", mixinStandardHelpOptions = true,
+        description = "Run a network locally; print progress each second and a summary at the end.")
+public final class RunCommand implements Callable<Integer> {
+    @Parameters(paramLabel = "FILE", description = "the .fdn network definition")
+    Path file;
+
+    @Option(names = "--for", paramLabel = "DURATION", converter = DurationText.class,
+            description = "how long to run (5s, 500ms, 2m); default: until interrupted")
+    Duration duration;
+
+    @Option(names = "--set", paramLabel = "MODULE/NODE=VALUE",
+            description = "set a Data's value once the network runs (repeatable); a bare node name means main")
+    List<String> sets = new ArrayList<>();
+
+    @Option(names = "--param", paramLabel = "MODULE/NODE:NAME=VALUE",
+            description = "set a node parameter once the network runs (repeatable)")
+    List<String> params = new ArrayList<>();
+
+    @Option(names = "--load", paramLabel = "MODULE", description = "also load this module at start (repeatable)")
+    List<String> loads = new ArrayList<>();
+
+    @Option(names = "--allow-path", paramLabel = "DIR",
+            description = "another folder node classes may be loaded from (besides the file's folder)")
+    List<Path> allowedRoots = new ArrayList<>();
+
+    @Option(names = "--workers", paramLabel = "N", description = "worker threads (default: one per core)")
+    Integer workers;
+
+    @Option(names = "--trace", description = "print every event as it happens")
+    boolean trace;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() throws InterruptedException {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        NetworkInfo definition;
+        try {
+            definition = NetworkRepository.load(file);
+        } catch (NetworkFileException e) {
+            e.problems().forEach(p -> err.println(p));
+            err.flush();
+            return 1;
+        }
+        EventCounter counter = new EventCounter();
+        RuntimeOptions options = RuntimeOptions.defaults().sink(counter)
+                .classLoading(ClassLoadingPolicy.forNetworkFile(file, allowedRoots));
+        if (workers != null) {
+            options.workerThreads(workers);
+        }
+        if (trace) {
+            options.sink(new TracePrinter(out, System.currentTimeMillis() * 1000));
+        }
+        out.printf("starting %s (%s)%n", name(definition), file);
+        out.flush();
+        long started = System.nanoTime();
+        RuntimeNetwork network;
+        try {
+            network = RuntimeNetwork.start(definition, options);
+        } catch (RuntimeStartException e) {
+            err.println(file + ": the network cannot start:");
+            e.problems().forEach(p -> err.println("  " + p));
+            err.flush();
+            return 1;
+        }
+        CountDownLatch stop = new CountDownLatch(1);
+        CountDownLatch summarized = new CountDownLatch(1);
+        // Ctrl-C: stop the run, and keep the JVM alive until the summary is printed (at most 5 s)
+        Thread hook = new Thread(() -> {
+            stop.countDown();
+            try {
+                summarized.await(5, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "fdnet-run-stop");
+        Runtime.getRuntime().addShutdownHook(hook);
+        try {
+            Controller controller = network.controller();
+            out.printf("running: modules %s, %d worker threads%n", controller.loadedModules(), network.workerThreads());
+            out.flush();
+            if (!applyRequests(controller, err)) {
+                return 2;
+            }
+            long end = duration == null ? Long.MAX_VALUE : started + duration.toNanos();
+            while (System.nanoTime() < end) {
+                long waitNanos = Math.min(TimeUnit.SECONDS.toNanos(1), end - System.nanoTime());
+                if (stop.await(Math.max(1, waitNanos), TimeUnit.NANOSECONDS)) {
+                    break;
+                }
+                status(out, network, counter, started);
+            }
+            summary(out, definition, network, counter, started);
+        } finally {
+            network.close();
+            summarized.countDown();
+            try {
+                Runtime.getRuntime().removeShutdownHook(hook);
+            } catch (IllegalStateException shuttingDown) {
+                // the JVM is already stopping because of Ctrl-C: the summary below still prints
+            }
+        }
+        return 0;
+    }
+
+    private boolean applyRequests(Controller controller, PrintWriter err) {
+        for (String module : loads) {
+            ChangeOutcome o = controller.load(module);
+            if (!o.executed()) {
+                err.println("--load " + module + ": " + o.reason());
+                err.flush();
+                return false;
+            }
+        }
+        for (String set : sets) {
+            int eq = set.indexOf('=');
+            if (eq < 0) {
+                err.println("--set " + set + ": expected MODULE/NODE=VALUE");
+                err.flush();
+                return false;
+            }
+            try {
+                controller.setValue(NodeRef.parse(set.substring(0, eq).strip(), ModuleInfo.MAIN), set.substring(eq + 1));
+            } catch (IllegalArgumentException e) {
+                err.println("--set " + set + ": " + e.getMessage());
+                err.flush();
+                return false;
+            }
+        }
+        for (String p : params) {
+            int colon = p.indexOf(':');
+            int eq = p.indexOf('=', Math.max(colon, 0));
+            if (colon < 0 || eq < 0) {
+                err.println("--param " + p + ": expected MODULE/NODE:NAME=VALUE");
+                err.flush();
+                return false;
+            }
+            ChangeOutcome o = controller.setParameter(NodeRef.parse(p.substring(0, colon).strip(), ModuleInfo.MAIN),
+                    p.substring(colon + 1, eq).strip(), p.substring(eq + 1));
+            if (!o.executed()) {
+                err.println("--param " + p + ": " + o.reason());
+                err.flush();
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static void status(PrintWriter out, RuntimeNetwork network, EventCounter counter, long started) {
+        long failed = network.controller().relationStates().stream()
+                .filter(s -> s.status() == RelationStatus.FAILED).count();
+        out.printf(Locale.ROOT, "[%6.1fs] firings %,d  values %,d  events %,d  failed %d%n",
+                (System.nanoTime() - started) / 1e9, network.firings(), network.writes(), counter.total(), failed);
+        out.flush();
+    }
+
+    private static void summary(PrintWriter out, NetworkInfo definition, RuntimeNetwork network, EventCounter counter,
+                                long started) {
+        Controller c = network.controller();
+        double seconds = (System.nanoTime() - started) / 1e9;
+        out.printf(Locale.ROOT, "%nsummary of %s after %.1f s: %,d firings, %,d values, %,d events%n", name(definition),
+                seconds, network.firings(), network.writes(), counter.total());
+        out.println("events by kind:");
+        for (Map.Entry<String, Long> e : counter.byKind().entrySet()) {
+            out.printf(Locale.ROOT, "  %-20s %,d%n", e.getKey(), e.getValue());
+        }
+        out.println("Datas (values written, last value):");
+        for (ModuleInfo m : definition.modules()) {
+            for (NodeInfo n : m.nodes()) {
+                if (n.kind() != NodeKind.DATA) {
+                    continue;
+                }
+                NodeRef ref = new NodeRef(m.name(), n.name());
+                int id = c.nodeId(ref);
+                Value v = c.value(ref);
+                out.printf(Locale.ROOT, "  %-45s %,8d  %s%n", ref, id < 0 ? 0 : counter.valuesOf(id),
+                        v == null ? "(not running)" : shortText(v));
+            }
+        }
+        out.println("Relations (firings, state):");
+        List<RelationState> failed = new ArrayList<>();
+        for (RelationState s : c.relationStates()) {
+            out.printf(Locale.ROOT, "  %-45s %,8d  %s%n", s.relation(), s.firings(), s.status());
+            if (s.status() == RelationStatus.FAILED) {
+                failed.add(s);
+            }
+        }
+        if (failed.isEmpty()) {
+            out.println("failed Relations: none");
+        } else {
+            out.println("failed Relations:");
+            failed.forEach(s -> out.println("  " + s.relation() + ": " + s.cause()));
+        }
+        out.flush();
+    }
+
+    private static String shortText(Value v) {
+        String text = v.text();
+        if (v.type() == org.fdnet.event.ValueType.DOUBLE || v.type() == org.fdnet.event.ValueType.DOUBLES) {
+            StringBuilder b = new StringBuilder(v.length() > 1 || v.type() == org.fdnet.event.ValueType.DOUBLES ? "[" : "");
+            for (int i = 0; i < v.length(); i++) {
+                b.append(i == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.4f", v.element(i)));
+            }
+            text = b.append(v.type() == org.fdnet.event.ValueType.DOUBLES ? "]" : "").toString();
+        }
+        return text.length() > 80 ? text.substring(0, 77) + "..." : text;
+    }
+
+    private static String name(NetworkInfo n) {
+        return n.name() == null ? "(unnamed)" : n.name();
+    }
+}

@@ -1,0 +1,10 @@
+/**
+ * The runtime's commands, added to {@code fdnet} through {@link org.fdnet.cli.CommandProvider}:
+ * {@code fdnet run FILE} and the benchmark {@code fdnet bench core}.
+ *
+ * <pre>
+ *   fdnet run FILE ──▶ NetworkRepository.load ──▶ RuntimeNetwork.start ──▶ --load / --set / --param
+ *        └── status line each second (firings, values, events, failed) ──▶ summary ──▶ close
+ * </pre>
+ */
+package org.fdnet.runtime.cli;

@@ -1,0 +1,60 @@
+package org.fdnet.runtime.library;
+
+import java.util.List;
+import org.fdnet.netinfo.NodeInfo;
+import org.fdnet.netinfo.NodeRef;
+import org.fdnet.netinfo.Parameter;
+import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.Relation;
+import org.fdnet.runtime.RelationContext;
+import org.fdnet.runtime.servant.NodeDescription;
+import org.fdnet.runtime.servant.Servants;
+
+/**
+ * Self-organization at work: watches the network (Visitor) for running sensor Datas — of class
+ * {@code sensorClass}, default {@link DoubleSensor} — and gives each one that has none a low-pass filter:
+ * it creates (Paste) a Data {@code <sensor> filtered} and a {@link LowPass} Relation {@code <sensor> filter}
+ * with {@code alpha} (default 0.2) reading the sensor and writing the filtered Data, in module
+ * {@code module} (default: the sensor's own). Looks every {@code period} ms (give it one) and when an
+ * input changes. Reports how many filters it made.
+ */
+public class AutoFilter extends Relation {
+    private String sensorClass;
+    private String alpha;
+    private String module;
+    private int made;
+
+    @Override
+    protected void init(NodeParameters p) {
+        sensorClass = p.string("sensorClass", DoubleSensor.class.getName());
+        double a = p.doubleValue("alpha", 0.2);
+        if (!(a > 0 && a <= 1)) {
+            throw p.invalid("alpha", "must be in (0, 1], was " + a);
+        }
+        alpha = Double.toString(a);
+        module = p.string("module", null);
+    }
+
+    @Override
+    protected void compute(RelationContext context) {
+        Servants servants = context.servants();
+        for (NodeDescription sensor : servants.visitor().byClass(sensorClass)) {
+            NodeRef ref = sensor.ref();
+            String target = module == null ? ref.module() : module;
+            NodeRef filter = new NodeRef(target, ref.node() + " filter");
+            if (servants.reflect().describe(filter) != null) {
+                continue;
+            }
+            NodeInfo filtered = NodeInfo.data(ref.node() + " filtered", DoubleData.class.getName());
+            NodeInfo relation = NodeInfo.relation(filter.node(), LowPass.class.getName(), Parameter.named("alpha", alpha));
+            var outcome = servants.paste().pasteRelation(target, relation, List.of(filtered), List.of(ref),
+                    List.of(new NodeRef(target, filtered.name())));
+            if (outcome.executed()) {
+                made++;
+            } else {
+                context.report("could not filter " + ref + ": " + outcome.reason());
+            }
+        }
+        context.report("filters made: " + made);
+    }
+}

@@ -1,0 +1,13 @@
+/**
+ * The built-in node classes: Datas of every value type (and sensor Datas fed from outside), and the
+ * Relations of {@code docs/relations.md}. A node names them with an empty {@code path} and either the
+ * fully qualified name or the bare class name.
+ *
+ * <pre>
+ *   sources     PeriodicSource, Constant                     ──▶ Datas
+ *   shaping     Expression, MovingAverage, LowPass, RateLimiter, Threshold
+ *   deciding    Integration (candidates × judgment, thesis Figure 5), Selector, PdController
+ *   watching    Print;  AutoFilter (self-organization through the Servants)
+ * </pre>
+ */
+package org.fdnet.runtime.library;

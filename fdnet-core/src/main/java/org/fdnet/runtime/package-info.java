@@ -1,0 +1,53 @@
+/**
+ * The FDNet runtime on one host: the programming model for node authors ({@link org.fdnet.runtime.Data},
+ * {@link org.fdnet.runtime.SensorData}, {@link org.fdnet.runtime.Relation},
+ * {@link org.fdnet.runtime.RelationContext}, {@link org.fdnet.runtime.Value}), the engine that runs a
+ * {@link org.fdnet.netinfo.NetworkInfo} ({@link org.fdnet.runtime.RuntimeNetwork}), and the one surface
+ * everybody else acts through ({@link org.fdnet.runtime.Controller}).
+ *
+ * <h2>Flow of one value</h2>
+ * <pre>
+ *   setValue / SensorData.push / a Relation's firing
+ *        │  convert to the Data's type, Data.accept (outside any lock)
+ *        ▼
+ *   commit lock ─ stamp (EventClock) ─ store ─ DataValueObservers ─ DataValueEvent ─▶ EventSinks
+ *        │  (all outputs of one firing under one lock: readers never see half of it)
+ *        ▼
+ *   each Relation it triggers (not the writer itself) ── IDLE→QUEUED ──▶ Scheduler
+ *        ├─ on this thread, after the current firing (run-to-completion, ~0.2 µs a hop)
+ *        └─ on the bounded worker pool (timer, budget spent, idle worker for parallel work)
+ *   Relation fires: snapshot of its inputs (optimistic read of the commit lock) → compute → commit
+ * </pre>
+ *
+ * <h2>Structure</h2>
+ * <pre>
+ *   Controller request (edit, parameter, load/unload/hold/resume, restart) — also from Servants
+ *        │  structure lock; edit a COPY of the definition (refused → nothing changed)
+ *        ▼
+ *   StructurePlan (loaded modules × Placement) → construct new nodes (failure → refused)
+ *        ▼
+ *   commit: DISCONNECT, DESTROY, CREATE, CONNECT events; Rewiring; statuses
+ *        ▼  after the lock
+ *   new and rewired Relations fire once
+ * </pre>
+ *
+ * <h2>Seams for distribution (Part 3)</h2>
+ * <ol>
+ * <li><b>Placement</b> — {@link org.fdnet.runtime.RuntimeOptions#placement(Placement)} with a
+ *     {@link org.fdnet.runtime.Placement} decides which nodes this process instantiates. Default
+ *     {@link org.fdnet.runtime.Placement#all()}; {@link org.fdnet.runtime.Placement#thisHost()} keeps nodes whose
+ *     {@code host} is localhost, 127.0.0.1, ::1, empty or this machine's name;
+ *     {@link org.fdnet.runtime.Placement#forHostNames(java.util.Set)} for a named host.</li>
+ * <li><b>Value observers</b> — {@link org.fdnet.runtime.Controller#observe} registers a
+ *     {@link org.fdnet.runtime.DataValueObserver} that sees every value of a Data in the Data's own order
+ *     (called under the commit lock: enqueue and return). It follows the Data through unload, reload and
+ *     parameter changes.</li>
+ * <li><b>Injection</b> — {@link org.fdnet.runtime.Controller#setValue} writes a value into a local Data (or a
+ *     stand-in) from outside, exactly as a Relation would; a {@link org.fdnet.runtime.SensorData} can push too.</li>
+ * <li><b>Remote stand-ins</b> — a connection whose other end is not local never crashes the engine: a local
+ *     Relation that reads or writes a remote Data gets a local stand-in of it (no events of its own; feed it with
+ *     setValue, forward its values with observe); a remote Relation on a local Data is simply recorded.
+ *     {@link org.fdnet.runtime.Controller#remoteLinks()} lists them, broken ones with the reason.</li>
+ * </ol>
+ */
+package org.fdnet.runtime;

@@ -1,0 +1,111 @@
+package org.fdnet.runtime;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.fdnet.runtime.TestNetworks.*;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import javax.tools.JavaCompiler;
+import javax.tools.ToolProvider;
+import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.netinfo.NodeInfo;
+import org.fdnet.netinfo.NodeKind;
+import org.fdnet.runtime.loading.ClassLoadingPolicy;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+@Timeout(60)
+class ClassLoadingTest {
+    @TempDir
+    Path dir;
+
+    private RuntimeOptions optionsFor(Path networkFile) {
+        return RuntimeOptions.defaults().workerThreads(1)
+                .classLoading(ClassLoadingPolicy.forNetworkFile(networkFile, List.of()));
+    }
+
+    private static NodeInfo relationAt(String name, String path, String cls) {
+        return new NodeInfo(NodeKind.RELATION, name, "localhost", path, cls, List.of());
+    }
+
+    @Test
+    void shouldRefuseAnUnknownBuiltInClassNamingModuleNodeAndClass() {
+        NetworkInfo n = new NetworkInfo("x");
+        n.addModule("Arm", true);
+        n.addNode("Arm", relation("Servo", "org.fdnet.runtime.library.NoSuchThing"));
+        assertThatThrownBy(() -> RuntimeNetwork.start(n, optionsFor(dir.resolve("x.fdn"))))
+                .hasMessageContaining("module 'Arm', node 'Servo', class 'org.fdnet.runtime.library.NoSuchThing'")
+                .hasMessageContaining("no such built-in class");
+    }
+
+    @Test
+    void shouldRefuseADataClassUsedAsARelation() {
+        NetworkInfo n = new NetworkInfo("x");
+        n.addNode("main", relation("Oops", "DoubleData"));
+        assertThatThrownBy(() -> RuntimeNetwork.start(n, optionsFor(dir.resolve("x.fdn"))))
+                .hasMessageContaining("node 'Oops'")
+                .hasMessageContaining("the node is a Relation but its class is a Data class");
+    }
+
+    @Test
+    void shouldRefuseAnyClassOutsideTheBuiltInPackagesWithoutAPath() {
+        NetworkInfo n = new NetworkInfo("x");
+        n.addNode("main", relation("Evil", "java.lang.Thread"));
+        assertThatThrownBy(() -> RuntimeNetwork.start(n, optionsFor(dir.resolve("x.fdn"))))
+                .hasMessageContaining("class 'java.lang.Thread'").hasMessageContaining("must be built in");
+    }
+
+    @Test
+    void shouldRefuseAPathOutsideTheAllowedRoots() throws Exception {
+        Path network = Files.createDirectories(dir.resolve("net")).resolve("x.fdn");
+        Files.createDirectories(dir.resolve("elsewhere"));
+        NetworkInfo n = new NetworkInfo("x");
+        n.addNode("main", relationAt("Plugin", "../elsewhere", "p.Thing"));
+        assertThatThrownBy(() -> RuntimeNetwork.start(n, optionsFor(network)))
+                .hasMessageContaining("node 'Plugin'").hasMessageContaining("outside the allowed places");
+    }
+
+    @Test
+    void shouldLoadEachPathsClassesWithTheirOwnLoader() throws Exception {
+        Path network = dir.resolve("x.fdn");
+        compile(dir.resolve("one"), "10");
+        compile(dir.resolve("two"), "20");
+        NetworkInfo n = new NetworkInfo("x");
+        n.addNode("main", data("A", "DoubleData"));
+        n.addNode("main", data("B", "DoubleData"));
+        n.addNode("main", relationAt("First", "one", "plugin.Emit"));
+        n.addNode("main", relationAt("Second", "two", "plugin.Emit"));
+        write(n, "main", "First", "A");
+        write(n, "main", "Second", "B");
+        try (RuntimeNetwork net = RuntimeNetwork.start(n, optionsFor(network))) {
+            quiet(net);
+            // same class name, two folders: two classes, each with its own constant
+            assertThat(net.controller().value(ref("A")).asDouble()).isEqualTo(10.0);
+            assertThat(net.controller().value(ref("B")).asDouble()).isEqualTo(20.0);
+        }
+    }
+
+    @Test
+    void shouldRefuseAClassMissingFromItsPath() throws Exception {
+        compile(dir.resolve("one"), "1");
+        NetworkInfo n = new NetworkInfo("x");
+        n.addNode("main", relationAt("Lost", "one", "plugin.Missing"));
+        assertThatThrownBy(() -> RuntimeNetwork.start(n, optionsFor(dir.resolve("x.fdn"))))
+                .hasMessageContaining("class 'plugin.Missing'").hasMessageContaining("class not found under");
+    }
+
+    private static void compile(Path folder, String constant) throws Exception {
+        Path src = Files.createDirectories(folder.resolve("src/plugin")).resolve("Emit.java");
+        Files.writeString(src, "package plugin;\n"
+                + "public class Emit extends org.fdnet.runtime.Relation {\n"
+                + "  protected void compute(org.fdnet.runtime.RelationContext c) {\n"
+                + "    c.outputAll(org.fdnet.runtime.Value.of(" + constant + ".0));\n  }\n}\n");
+        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
+        int rc = javac.run(null, null, null, "-d", folder.toString(), "-cp", System.getProperty("java.class.path"),
+                src.toString());
+        assertThat(rc).isZero();
+    }
+}

@@ -94,6 +94,13 @@ public final class BatchWriter implements Runnable {
     public void run() {
         long timerStart = System.nanoTime();
         try {
+            connection = store.openWriterConnection();
+            databaseState = "connected";
+        } catch (SQLException e) {
+            databaseState = "unreachable: " + e.getMessage();
+            LOG.warn("writer cannot reach the database yet ({}); it will retry with the first batch", e.getMessage());
+        }
+        try {
             while (true) {
                 boolean urgent = cache.pressured() || flushTarget.get() > cache.committedCount() || stopping;
                 if (stopping && (!drainOnStop || cache.unwrittenCount() == 0)) {

@@ -90,11 +90,15 @@ public final class LoggerCommand implements Callable<Integer> {
             System.err.println("fdnet logger: cannot start: " + e.getMessage());
             return 1;
         }
-        CountDownLatch stopped = new CountDownLatch(1);
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            logger.stop();
-            stopped.countDown();
-        }, "fdnet-logger-shutdown"));
+        // Ctrl-C / TERM stop the logger *before* the JVM's shutdown hooks run: the embedded PostgreSQL library
+        // stops its server from a hook of its own, which would race the writer's final drain.
+        for (String name : new String[] {"INT", "TERM"}) {
+            sun.misc.Signal.handle(new sun.misc.Signal(name), signal -> new Thread(() -> {
+                System.out.println("fdnet logger: stopping (writing what the cache holds) ...");
+                logger.stop();
+                System.exit(0);
+            }, "fdnet-logger-stop").start());
+        }
         System.out.printf("fdnet logger: cores -> 127.0.0.1:%d, viewers -> 127.0.0.1:%d (Ctrl-C stops)%n",
                 logger.receiverPort(), logger.senderPort());
         System.out.flush();

@@ -91,9 +91,7 @@ public final class LoggerClient implements EventSink {
         try {
             if (journal.isEmpty() && inflight.size() + pending.size() < settings.memoryEvents()) {
                 pending.addLast(event);
-            } else if (journal.hasRoomFor(event)) {
-                journal.append(event);
-            } else {
+            } else if (!journal.append(event)) {
                 countLoss();
                 return;
             }

@@ -62,24 +62,25 @@ final class SpillJournal implements AutoCloseable {
         return count == 0;
     }
 
-    boolean hasRoomFor(NetworkEvent event) {
-        return bytes + approximateSize(event) <= maxBytes;
-    }
-
-    void append(NetworkEvent event) {
+    /** Appends the event, or returns false (appending nothing) when it would pass the journal's bound. */
+    boolean append(NetworkEvent event) {
         try {
+            frame.begin(MessageType.EVENTS);
+            EventCodec.write(frame, event);
+            long size = frame.frameLength() + 4L;
+            if (bytes + size > maxBytes) {
+                return false;
+            }
             if (segments.isEmpty() || segments.peekLast().records[1] >= SEGMENT_BYTES) {
                 openSegment();
             }
-            frame.begin(MessageType.EVENTS);
-            EventCodec.write(frame, event);
             frame.writeTo(appender);
-            long size = frame.frameLength() + 4L;
             Segment last = segments.peekLast();
             last.records[0]++;
             last.records[1] += size;
             bytes += size;
             count++;
+            return true;
         } catch (IOException e) {
             throw new UncheckedIOException("cannot append to the event journal in " + directory, e);
         }
@@ -136,10 +137,6 @@ final class SpillJournal implements AutoCloseable {
         Path file = directory.resolve(String.format("segment-%06d.journal", nextSegment++));
         appender = new BufferedOutputStream(Files.newOutputStream(file), 1 << 16);
         segments.addLast(new Segment(file, new long[3]));
-    }
-
-    private static long approximateSize(NetworkEvent event) {
-        return 64;
     }
 
     @Override

@@ -137,12 +137,6 @@ public abstract class Connection implements Runnable {
         }
     }
 
-    protected final void flushOut() throws IOException {
-        synchronized (writer) {
-            out.flush();
-        }
-    }
-
     /** How a frame is built into the connection's writer. */
     @FunctionalInterface
     protected interface FrameBuilder {

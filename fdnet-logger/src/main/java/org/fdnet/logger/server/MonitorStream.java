@@ -7,8 +7,6 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import org.fdnet.event.wire.ErrorCode;
-import org.fdnet.event.wire.EventCodec;
-import org.fdnet.event.wire.MessageType;
 import org.fdnet.event.wire.Protocol;
 import org.fdnet.logger.cache.CachedEvent;
 import org.fdnet.logger.cache.EventCache;
@@ -118,7 +116,7 @@ final class MonitorStream implements MonitorSubscriber {
                     continue;
                 }
                 try {
-                    connection.sendEvents(MessageType.MONITOR_EVENTS, -1, batch);
+                    connection.sendMonitored(batch);
                 } finally {
                     cache.delivered(batch);
                     batch.clear();
@@ -134,11 +132,5 @@ final class MonitorStream implements MonitorSubscriber {
             connection.refuse(ErrorCode.BAD_REQUEST, "viewer too slow: more than " + MAX_QUEUED + " monitored events waiting");
         }
         close();
-    }
-
-    static void encode(org.fdnet.event.wire.FrameWriter w, List<CachedEvent> events) {
-        for (CachedEvent e : events) {
-            EventCodec.write(w, e.event());
-        }
     }
 }

@@ -37,6 +37,8 @@ final class ReceiverConnection extends Connection {
     private final SourceDirectory directory;
     private final RunOwners owners;
     private RunProgress run;
+    private final Object ackLock = new Object();
+    private long ackWanted;
 
     ReceiverConnection(Socket socket, int maxFrameBytes, EventCache cache, SourceDirectory directory, RunOwners owners) {
         super(socket, maxFrameBytes);
@@ -58,6 +60,9 @@ final class ReceiverConnection extends Connection {
             return false;
         }
         owners.claim(run, this);
+        Thread acker = new Thread(this::sendAcks, "fdnet-acks-" + socket.getRemoteSocketAddress());
+        acker.setDaemon(true);
+        acker.start();
         synchronized (run) {
             run.ackListener(this::ack);
             long committed = run.committed();
@@ -68,11 +73,39 @@ final class ReceiverConnection extends Connection {
         return true;
     }
 
+    /**
+     * Called by the writer after a commit: only records the number and wakes this connection's acker, so a
+     * core that does not read its socket can stall nothing but itself.
+     */
     private void ack(long seq) {
+        synchronized (ackLock) {
+            if (seq > ackWanted) {
+                ackWanted = seq;
+                ackLock.notifyAll();
+            }
+        }
+    }
+
+    private void sendAcks() {
+        long sent = 0;
         try {
-            send(w -> w.begin(MessageType.ACK).putLong(seq));
+            while (!socket.isClosed()) {
+                long seq;
+                synchronized (ackLock) {
+                    while (ackWanted <= sent && !socket.isClosed()) {
+                        ackLock.wait(500);
+                    }
+                    seq = ackWanted;
+                }
+                if (seq > sent) {
+                    send(w -> w.begin(MessageType.ACK).putLong(seq));
+                    sent = seq;
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         } catch (IOException e) {
-            LOG.debug("cannot acknowledge {} to {}: {}", seq, describe(), e.getMessage());
+            LOG.debug("cannot acknowledge to {}: {}", describe(), e.getMessage());
         }
     }
 

@@ -36,7 +36,7 @@ final class SenderConnection extends Connection {
 
     @Override
     protected String describe() {
-        return super.describe();
+        return super.describe(); // visible to MonitorStream (same package)
     }
 
     @Override
@@ -128,10 +128,10 @@ final class SenderConnection extends Connection {
     }
 
     /** Sends monitored events (from the stream's thread). */
-    void sendEvents(MessageType type, int unused, List<CachedEvent> events) throws IOException {
+    void sendMonitored(List<CachedEvent> events) throws IOException {
         send(w -> {
-            w.begin(type).putInt(events.size());
-            MonitorStream.encode(w, events);
+            w.begin(MessageType.MONITOR_EVENTS).putInt(events.size());
+            events.forEach(e -> EventCodec.write(w, e.event()));
         });
     }
 

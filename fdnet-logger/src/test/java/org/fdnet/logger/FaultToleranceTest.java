@@ -11,6 +11,9 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
+import org.fdnet.logger.config.LoggerConfig;
+import org.fdnet.logger.config.LoggerSetting;
+import org.fdnet.logger.server.ConnectionState;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -62,6 +65,41 @@ class FaultToleranceTest {
                 assertThat(client.lostEvents()).isZero();
                 assertThat(storedEvents(runOf(client))).isEqualTo(produced);
                 assertThat(logger.writer().databaseState()).isEqualTo("connected");
+            }
+        }
+    }
+
+    @Test
+    void shouldPushBackOnTheCoreWithinItsCapacityWhileTheDatabaseIsDownAndLoseNothing() throws Exception {
+        LoggerConfig config = pg.loggerConfig().set(LoggerSetting.MEMORY_CAPACITY_MB, "1");
+        long capacity = config.cacheCapacityBytes();
+        try (NetworkStateLogger logger = new NetworkStateLogger(config)) {
+            logger.start();
+            try (LoggerClient client = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(),
+                    "pressed-core").withMemoryEvents(5000).withJournal(folder.resolve("j-press"), 256 << 20))) {
+                Producer producer = new Producer(new TestEvents(8), client, 40);
+                waitForCommits(client, 1000);
+                pg.stopDatabase();
+                long maxUsed = 0;
+                boolean sawPressure = false;
+                boolean sawWaitingCore = false;
+                long deadline = System.currentTimeMillis() + 4000;
+                while (System.currentTimeMillis() < deadline) {
+                    LoggerStatus s = logger.status();
+                    maxUsed = Math.max(maxUsed, s.cache().usedBytes());
+                    sawPressure |= s.cache().pressured();
+                    sawWaitingCore |= s.cores().stream().anyMatch(c -> c.state() == ConnectionState.WAITING);
+                    Thread.sleep(20);
+                }
+                assertThat(sawPressure).as("critical level reached").isTrue();
+                assertThat(sawWaitingCore).as("receiver stopped reading its core").isTrue();
+                assertThat(maxUsed).as("cache within its capacity").isLessThanOrEqualTo(capacity);
+                assertThat(client.status().inJournal()).as("the core spilled to its journal, never blocked").isPositive();
+                pg.startDatabase();
+                long produced = producer.stop();
+                assertThat(client.flush(120_000)).isTrue();
+                assertThat(client.lostEvents()).isZero();
+                assertThat(storedEvents(runOf(client))).isEqualTo(produced);
             }
         }
     }

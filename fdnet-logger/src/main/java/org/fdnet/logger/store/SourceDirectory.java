@@ -128,12 +128,6 @@ public final class SourceDirectory {
         return slash < 0 ? ref.node().equals(filter) : ref.toString().equals(filter);
     }
 
-    /** A name for messages: {@code Module/Node} or {@code #id}. */
-    public synchronized String describe(int sourceId) {
-        LoggedNode n = names.get(sourceId);
-        return n == null ? "#" + sourceId : n.name().toString();
-    }
-
     static NodeKind kindOf(String text) {
         return "data".equals(text) ? NodeKind.DATA : NodeKind.RELATION;
     }

@@ -30,6 +30,12 @@ import org.slf4j.LoggerFactory;
 public final class NetworkStateLogger implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(NetworkStateLogger.class);
     private static final long DRAIN_TIMEOUT_MILLIS = 60_000;
+    /**
+     * How long a viewer's history waits for the flush it asked for. Short on purpose: the answer reads the
+     * cache before the database and events leave the cache only after their commit, so it is complete
+     * without the flush; waiting for a large backlog (a burst) would only make the viewer slow.
+     */
+    private static final long VIEWER_FLUSH_WAIT_MILLIS = 200;
 
     private final LoggerConfig config;
     private EmbeddedDatabase embedded;
@@ -75,8 +81,7 @@ public final class NetworkStateLogger implements AutoCloseable {
             writer = new BatchWriter(WriterSettings.of(config), cache, store, directory, this::giveUp);
             writerThread = new Thread(writer, "fdnet-logger-writer");
             writerThread.start();
-            ViewerService viewers = new ViewerService(cache, store, directory, writer, Math.max(5000,
-                    2 * config.batchTimeoutMillis()));
+            ViewerService viewers = new ViewerService(cache, store, directory, writer, VIEWER_FLUSH_WAIT_MILLIS);
             receiver = Servers.receiver(config, cache, directory);
             sender = Servers.sender(config, viewers);
             running = true;

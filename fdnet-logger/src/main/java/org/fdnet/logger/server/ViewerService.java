@@ -14,9 +14,11 @@ import org.fdnet.logger.writer.BatchWriter;
 
 /**
  * Answers a viewer's history request (thesis, chapter 4 VI): from the cache alone when it holds every
- * event of the nodes in the range, else — after flushing what is pending, as the thesis requires — from
- * the cache and the database merged. The cache is read before the database, so an event committed and
- * evicted in between is still found in the database; duplicates (in both) are dropped.
+ * event of the nodes in the range, else — after asking the writer to flush what is pending, as the thesis
+ * requires, and waiting for that a bounded time — from the cache and the database merged. The cache is read
+ * before the database, so an event committed and evicted in between is still found in the database, and an
+ * event not yet committed is still in the cache: the answer is complete even when the flush has not
+ * finished. Duplicates (in both) are dropped.
  */
 public final class ViewerService {
     private static final Comparator<NetworkEvent> TIME_ORDER =

@@ -10,6 +10,8 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import org.fdnet.event.EventSink;
+import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.client.ClientStatus;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
@@ -29,7 +31,9 @@ import org.fdnet.runtime.RuntimeOptions;
 import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.runtime.Value;
 import org.fdnet.runtime.loading.ClassLoadingPolicy;
+import org.fdnet.corba.cli.DistributionOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -41,7 +45,8 @@ import picocli.CommandLine.Spec;
  * Exit 0 when it ran, 1 for a bad file or a network that cannot start, 2 for a bad {@code --set}/{@code --load}.
  */
 @Command(name = "run", mixinStandardHelpOptions = true,
-        description = "Run a network locally; print progress each second and a summary at the end.")
+        description = {"Run a network; print progress each second and a summary at the end.",
+                "Nodes whose <host> names another host run there (fdnet host --name H); see docs/distribution.md."})
 public final class RunCommand implements Callable<Integer> {
     @Parameters(paramLabel = "FILE", description = "the .fdn network definition")
     Path file;
@@ -76,6 +81,9 @@ public final class RunCommand implements Callable<Integer> {
                     + " while it is slow or away events wait in memory and a bounded disk journal")
     String logger;
 
+    @Mixin
+    DistributionOptions distribution;
+
     @Spec
     CommandSpec spec;
 
@@ -92,14 +100,6 @@ public final class RunCommand implements Callable<Integer> {
             return 1;
         }
         EventCounter counter = new EventCounter();
-        RuntimeOptions options = RuntimeOptions.defaults().sink(counter)
-                .classLoading(ClassLoadingPolicy.forNetworkFile(file, allowedRoots));
-        if (workers != null) {
-            options.workerThreads(workers);
-        }
-        if (trace) {
-            options.sink(new TracePrinter(out, System.currentTimeMillis() * 1000));
-        }
         LoggerClient loggerClient = null;
         if (logger != null) {
             try {
@@ -109,8 +109,26 @@ public final class RunCommand implements Callable<Integer> {
                 err.flush();
                 return 2;
             }
-            options.sink(loggerClient);
             out.printf("recording events with the logger at %s (run %s)%n", logger, loggerClient.run());
+        }
+        if (distribution.appliesTo(definition)) {
+            EventSink events = loggerClient == null ? counter : both(counter, loggerClient);
+            try {
+                return distribution.run(file, definition, duration, allowedRoots, sets, loads, events, out, err);
+            } finally {
+                closeLogger(out, loggerClient);
+            }
+        }
+        RuntimeOptions options = RuntimeOptions.defaults().sink(counter)
+                .classLoading(ClassLoadingPolicy.forNetworkFile(file, allowedRoots));
+        if (workers != null) {
+            options.workerThreads(workers);
+        }
+        if (trace) {
+            options.sink(new TracePrinter(out, System.currentTimeMillis() * 1000));
+        }
+        if (loggerClient != null) {
+            options.sink(loggerClient);
         }
         out.printf("starting %s (%s)%n", name(definition), file);
         out.flush();
@@ -164,6 +182,23 @@ public final class RunCommand implements Callable<Integer> {
             }
         }
         return 0;
+    }
+
+    /** One sink feeding two (the distributed run takes a single sink). */
+    private static EventSink both(EventSink first, EventSink second) {
+        return new EventSink() {
+            @Override
+            public void accept(NetworkEvent event) {
+                first.accept(event);
+                second.accept(event);
+            }
+
+            @Override
+            public void flush() {
+                first.flush();
+                second.flush();
+            }
+        };
     }
 
     /** Waits (bounded) until the logger committed every event, then says how it went. */

@@ -1,0 +1,163 @@
+package org.fdnet.corba;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.UncheckedIOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * An {@code fdnet} command running in a child JVM on this machine's class path: how the benchmark and the
+ * multi-process tests start naming services and hosts. Its output is kept (for failure messages) and
+ * {@link #start} returns once a line containing the ready marker appears. {@link #close()} always ends
+ * the process: a polite destroy first, then {@code destroyForcibly}.
+ */
+public final class FdnetChildProcess implements AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(FdnetChildProcess.class);
+
+    private final String label;
+    private final Process process;
+    private final List<String> output = new ArrayList<>();
+    private boolean ready;
+
+    private FdnetChildProcess(String label, Process process) {
+        this.label = label;
+        this.process = process;
+    }
+
+    /**
+     * Starts {@code fdnet ARGS...} and waits until it prints a line containing {@code readyMarker}.
+     *
+     * @throws IllegalStateException with the child's output when it exits or is not ready in time
+     */
+    public static FdnetChildProcess start(String label, List<String> fdnetArgs, String readyMarker, long timeoutMillis) {
+        List<String> command = new ArrayList<>();
+        command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        command.add("-Xss1m");
+        command.add("-cp");
+        command.add(System.getProperty("java.class.path"));
+        command.add("org.fdnet.cli.FdnetCommand");
+        command.addAll(fdnetArgs);
+        Process p;
+        try {
+            p = new ProcessBuilder(command).redirectErrorStream(true).start();
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot start " + label, e);
+        }
+        FdnetChildProcess child = new FdnetChildProcess(label, p);
+        Thread reader = new Thread(() -> child.pump(readyMarker), "fdnet-child-" + label);
+        reader.setDaemon(true);
+        reader.start();
+        if (!child.awaitReady(timeoutMillis)) {
+            child.close();
+            throw new IllegalStateException(label + " did not become ready in " + timeoutMillis + " ms; output:\n"
+                    + String.join("\n", child.output()));
+        }
+        return child;
+    }
+
+    private void pump(String readyMarker) {
+        try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
+            String line;
+            while ((line = in.readLine()) != null) {
+                synchronized (this) {
+                    output.add(line);
+                    if (line.contains(readyMarker)) {
+                        ready = true;
+                    }
+                    notifyAll();
+                }
+            }
+        } catch (IOException e) {
+            LOG.debug("{} output closed: {}", label, e.toString());
+        }
+        synchronized (this) {
+            notifyAll();
+        }
+    }
+
+    private synchronized boolean awaitReady(long timeoutMillis) {
+        long deadline = System.currentTimeMillis() + timeoutMillis;
+        while (!ready && process.isAlive()) {
+            long left = deadline - System.currentTimeMillis();
+            if (left <= 0) {
+                return false;
+            }
+            try {
+                wait(Math.min(left, 100));
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return false;
+            }
+        }
+        return ready;
+    }
+
+    public synchronized List<String> output() {
+        return List.copyOf(output);
+    }
+
+    /** Waits for the process to end by itself; returns its exit code, or -1 if it is still running. */
+    public int awaitExit(long timeoutMillis) {
+        try {
+            if (process.waitFor(timeoutMillis, TimeUnit.MILLISECONDS)) {
+                return process.exitValue();
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        return -1;
+    }
+
+    public boolean isAlive() {
+        return process.isAlive();
+    }
+
+    public long pid() {
+        return process.pid();
+    }
+
+    /** Kills the process at once (SIGKILL, like {@code kill -9}): no shutdown hook runs. */
+    public void kill() {
+        process.destroyForcibly();
+        try {
+            process.waitFor(10, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    @Override
+    public void close() {
+        if (!process.isAlive()) {
+            return;
+        }
+        process.destroy();
+        try {
+            if (!process.waitFor(5, TimeUnit.SECONDS)) {
+                process.destroyForcibly();
+                process.waitFor(5, TimeUnit.SECONDS);
+            }
+        } catch (InterruptedException e) {
+            process.destroyForcibly();
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** A port on 127.0.0.1 that was free a moment ago. */
+    public static int freePort() {
+        try (ServerSocket s = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            return s.getLocalPort();
+        } catch (IOException e) {
+            throw new UncheckedIOException("no free port on 127.0.0.1", e);
+        }
+    }
+}

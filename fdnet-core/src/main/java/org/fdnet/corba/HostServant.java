@@ -1,0 +1,340 @@
+package org.fdnet.corba;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.NoSuchElementException;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicLong;
+import org.fdnet.corba.idl.ChangeKind;
+import org.fdnet.corba.idl.ConnectionSpec;
+import org.fdnet.corba.idl.HostPOA;
+import org.fdnet.corba.idl.NetworkListener;
+import org.fdnet.corba.idl.NodeId;
+import org.fdnet.corba.idl.NodeSpec;
+import org.fdnet.corba.idl.Refused;
+import org.fdnet.corba.idl.UnknownLink;
+import org.fdnet.corba.idl.UnknownNode;
+import org.fdnet.corba.idl.Value;
+import org.fdnet.corba.idl.ValueBatch;
+import org.fdnet.corba.idl.ValueSink;
+import org.fdnet.netinfo.ConnectionInfo;
+import org.fdnet.netinfo.NodeInfo;
+import org.fdnet.netinfo.NodeRef;
+import org.omg.CORBA.ORB;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The CORBA servant of one FDNet host ({@code interface Host} of {@code fdnet.idl}): turns remote
+ * requests into calls on the host's {@link LocalNetwork} and runs the host's ends of cross-host links.
+ *
+ * <p>Errors a caller can cause come back as IDL exceptions whose text names the node and the reason; the
+ * host keeps serving. Links: inbound ends ({@link InboundLink}) by link id; outbound ends
+ * ({@link OutboundLink}) observe a local node and push its values to a peer.
+ */
+public final class HostServant extends HostPOA implements AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(HostServant.class);
+
+    private final String hostName;
+    private final long incarnation;
+    private final LocalNetwork network;
+    private final ClassPolicy policy;
+    private final LinkSettings linkSettings;
+    private final ORB orb;
+    private final ChangeNotifier notifier;
+    private final Map<Long, InboundLink> inbound = new ConcurrentHashMap<>();
+    private final Map<Long, Forwarding> outbound = new ConcurrentHashMap<>();
+    private final AtomicLong retiredReceived = new AtomicLong();
+    private final Map<NodeRef, Map<String, Long>> seenByTarget = new ConcurrentHashMap<>();
+
+    private record Forwarding(OutboundLink link, NodeRef source, AutoCloseable observation) {
+    }
+
+    public HostServant(String hostName, LocalNetwork network, ClassPolicy policy, LinkSettings linkSettings, ORB orb) {
+        this.hostName = hostName;
+        this.incarnation = System.currentTimeMillis() * 1000 + (System.nanoTime() & 0x3ff);
+        this.network = network;
+        this.policy = policy;
+        this.linkSettings = linkSettings;
+        this.orb = orb;
+        this.notifier = new ChangeNotifier(hostName);
+    }
+
+    @Override
+    public String name() {
+        return hostName;
+    }
+
+    @Override
+    public long ping() {
+        return incarnation;
+    }
+
+    @Override
+    public void createNode(NodeSpec spec) throws Refused {
+        NodeInfo node = IdlMapping.node(spec, hostName);
+        String refusal = policy.refusal(node);
+        if (refusal != null) {
+            LOG.warn("refused to create {}: {}", IdlMapping.ref(spec.id), refusal);
+            throw new Refused(refusal);
+        }
+        NodeRef ref = IdlMapping.ref(spec.id);
+        refuseOnError(ref, () -> network.create(ref, node));
+        notifier.publish(ChangeKind.NODE_CREATED, ref.toString());
+    }
+
+    @Override
+    public void createStandIn(NodeSpec spec, String homeHost) throws Refused {
+        NodeRef ref = IdlMapping.ref(spec.id);
+        refuseOnError(ref, () -> network.createStandIn(ref, IdlMapping.node(spec, homeHost)));
+        notifier.publish(ChangeKind.NODE_CREATED, ref + " (stand-in)");
+    }
+
+    @Override
+    public void destroyNode(NodeId id) throws UnknownNode {
+        NodeRef ref = IdlMapping.ref(id);
+        closeLinksOf(ref);
+        try {
+            network.destroy(ref);
+        } catch (NoSuchElementException e) {
+            throw new UnknownNode(id);
+        }
+        notifier.publish(ChangeKind.NODE_DESTROYED, ref.toString());
+    }
+
+    @Override
+    public String[] nodes() {
+        return network.nodes().stream().map(NodeRef::toString).toArray(String[]::new);
+    }
+
+    @Override
+    public void connect(ConnectionSpec spec) throws UnknownNode, Refused {
+        ConnectionInfo c = IdlMapping.connection(spec);
+        requireKnown(spec.data);
+        requireKnown(spec.relation);
+        refuseOnError(c.relation(), () -> network.connect(c));
+        notifier.publish(ChangeKind.CONNECTED, c.toString());
+    }
+
+    @Override
+    public void disconnect(ConnectionSpec spec) throws UnknownNode {
+        ConnectionInfo c = IdlMapping.connection(spec);
+        requireKnown(spec.data);
+        requireKnown(spec.relation);
+        network.disconnect(c);
+        notifier.publish(ChangeKind.DISCONNECTED, c.toString());
+    }
+
+    @Override
+    public Value read(NodeId data) throws UnknownNode, Refused {
+        requireNode(data);
+        Object v = network.read(IdlMapping.ref(data));
+        if (v == null) {
+            throw new Refused(IdlMapping.ref(data) + " has no value yet");
+        }
+        return ValueCodec.encode(v);
+    }
+
+    @Override
+    public void write(NodeId data, Value v) throws UnknownNode, Refused {
+        requireNode(data);
+        NodeRef ref = IdlMapping.ref(data);
+        refuseOnError(ref, () -> network.write(ref, ValueCodec.decode(v)));
+    }
+
+    @Override
+    public void loadModule(String moduleName, NodeSpec[] nodes, ConnectionSpec[] connections) throws Refused {
+        List<NodeInfo> infos = new ArrayList<>();
+        for (NodeSpec spec : nodes) {
+            NodeInfo node = IdlMapping.node(spec, hostName);
+            String refusal = policy.refusal(node);
+            if (refusal != null) {
+                LOG.warn("refused to load module {}: {}", moduleName, refusal);
+                throw new Refused("module " + moduleName + " not loaded on " + hostName + ": " + refusal);
+            }
+            infos.add(node);
+        }
+        List<ConnectionInfo> conns = new ArrayList<>();
+        for (ConnectionSpec c : connections) {
+            conns.add(IdlMapping.connection(c));
+        }
+        try {
+            network.load(moduleName, infos, conns);
+        } catch (RuntimeException e) {
+            LOG.warn("module {} not loaded: {}", moduleName, e.toString());
+            throw new Refused("module " + moduleName + " not loaded on " + hostName + ": " + e.getMessage());
+        }
+        notifier.publish(ChangeKind.MODULE_LOADED, moduleName + " (" + infos.size() + " nodes, "
+                + conns.size() + " connections)");
+    }
+
+    @Override
+    public void unloadModule(String moduleName) {
+        for (NodeRef ref : network.nodes()) {
+            if (ref.module().equals(moduleName)) {
+                closeLinksOf(ref);
+                try {
+                    network.destroy(ref);
+                } catch (NoSuchElementException e) {
+                    LOG.debug("{} vanished during unload", ref);
+                }
+            }
+        }
+        notifier.publish(ChangeKind.MODULE_UNLOADED, moduleName);
+    }
+
+    @Override
+    public void acceptLink(long link, NodeId target, String fromHost) throws UnknownNode {
+        requireNode(target);
+        NodeRef ref = IdlMapping.ref(target);
+        Map<String, Long> seen = seenByTarget.computeIfAbsent(ref, r -> new ConcurrentHashMap<>());
+        retire(inbound.put(link, new InboundLink(link, ref, fromHost, network, seen)));
+        notifier.publish(ChangeKind.LINK_OPENED, "link " + link + " from " + fromHost + " into " + IdlMapping.ref(target));
+    }
+
+    @Override
+    public void forward(long link, NodeId source, ValueSink sink, String toHost, int window)
+            throws UnknownNode, Refused {
+        requireNode(source);
+        NodeRef ref = IdlMapping.ref(source);
+        Forwarding existing = outbound.get(link);
+        if (existing != null && existing.source.equals(ref)) {
+            existing.link.retarget(sink);
+            notifier.publish(ChangeKind.LINK_OPENED, "link " + link + " from " + ref + " to " + toHost + " (again)");
+            return;
+        }
+        LinkSettings settings;
+        try {
+            settings = window > 0 ? linkSettings.withWindow(window) : linkSettings;
+        } catch (IllegalArgumentException e) {
+            throw new Refused(e.getMessage());
+        }
+        String description = hostName + ":" + ref + " -> " + toHost + " (link " + link + ")";
+        String stream = hostName + "#" + incarnation + "#" + link;
+        OutboundLink out = new OutboundLink(link, stream, description, sink, settings, new OutboundLink.StateListener() {
+            @Override
+            public void broken(OutboundLink l, String reason) {
+                notifier.publish(ChangeKind.LINK_BROKEN, l.description() + ": " + reason);
+            }
+
+            @Override
+            public void restored(OutboundLink l) {
+                notifier.publish(ChangeKind.LINK_OPENED, l.description() + " restored");
+            }
+        });
+        AutoCloseable observation = network.observe(ref, (value, origin) -> {
+            if (!toHost.equals(origin)) {
+                out.offer(value, ValueOrigin.current());
+            }
+        });
+        Forwarding old = outbound.put(link, new Forwarding(out, ref, observation));
+        if (old != null) {
+            stop(old);
+        }
+        notifier.publish(ChangeKind.LINK_OPENED, description);
+    }
+
+    @Override
+    public void closeLink(long link) {
+        InboundLink in = inbound.remove(link);
+        retire(in);
+        Forwarding out = outbound.remove(link);
+        if (out != null) {
+            stop(out);
+        }
+        if (in != null || out != null) {
+            notifier.publish(ChangeKind.LINK_CLOSED, "link " + link);
+        }
+    }
+
+    @Override
+    public long deliver(ValueBatch batch) throws UnknownLink {
+        InboundLink in = inbound.get(batch.link);
+        if (in == null) {
+            throw new UnknownLink(batch.link);
+        }
+        return in.deliver(batch);
+    }
+
+    @Override
+    public void subscribe(NetworkListener listener) {
+        notifier.subscribe(listener, orb.object_to_string(listener));
+    }
+
+    @Override
+    public void unsubscribe(NetworkListener listener) {
+        notifier.unsubscribe(orb.object_to_string(listener));
+    }
+
+    /** Values applied to this host's Datas from links since it started. */
+    public long valuesReceived() {
+        return retiredReceived.get() + inbound.values().stream().mapToLong(InboundLink::applied).sum();
+    }
+
+    private void retire(InboundLink old) {
+        if (old != null) {
+            retiredReceived.addAndGet(old.applied());
+        }
+    }
+
+    /** The outbound links of this host, for status and tests. */
+    public List<OutboundLink> outboundLinks() {
+        return outbound.values().stream().map(Forwarding::link).toList();
+    }
+
+    private void closeLinksOf(NodeRef ref) {
+        inbound.values().removeIf(in -> {
+            if (in.target().equals(ref)) {
+                retire(in);
+                return true;
+            }
+            return false;
+        });
+        outbound.entrySet().removeIf(e -> {
+            if (e.getValue().source.equals(ref)) {
+                stop(e.getValue());
+                return true;
+            }
+            return false;
+        });
+    }
+
+    private void stop(Forwarding f) {
+        try {
+            f.observation.close();
+        } catch (Exception e) {
+            LOG.warn("could not stop observing {}: {}", f.source, e.toString(), e);
+        }
+        f.link.close();
+    }
+
+    private void requireKnown(NodeId id) throws UnknownNode {
+        if (!network.knows(IdlMapping.ref(id))) {
+            throw new UnknownNode(id);
+        }
+    }
+
+    private void requireNode(NodeId id) throws UnknownNode {
+        if (!network.nodes().contains(IdlMapping.ref(id))) {
+            throw new UnknownNode(id);
+        }
+    }
+
+    private static void refuseOnError(NodeRef ref, Runnable action) throws Refused {
+        try {
+            action.run();
+        } catch (RuntimeException e) {
+            LOG.warn("refused on {}: {}", ref, e.toString());
+            throw new Refused(ref + ": " + (e.getMessage() == null ? e.toString() : e.getMessage()));
+        }
+    }
+
+    @Override
+    public void close() {
+        outbound.values().forEach(this::stop);
+        outbound.clear();
+        inbound.clear();
+        notifier.close();
+    }
+}

@@ -1,0 +1,38 @@
+package org.fdnet.corba;
+
+/**
+ * Flow control of one cross-host link: how many values may wait, how many go in one call and how many
+ * calls may be in flight at once. Validated here, so a link never runs with a window of zero.
+ *
+ * @param window      two-way {@code deliver} calls in flight at once (JacORB's POA queue never sees more)
+ * @param batchMax    values in one call at most; fewer when fewer are waiting (latency stays one call)
+ * @param capacity    values a link holds that its peer has not acknowledged; a power of two. When full, a
+ *                    writer waits while the peer is reachable (no loss) and the oldest value is dropped
+ *                    and counted while the peer is down (a dead host never stops a live one)
+ * @param retryMillis how often a broken link tries its peer again
+ */
+public record LinkSettings(int window, int batchMax, int capacity, int retryMillis) {
+    public LinkSettings {
+        if (window < 1 || window > 64) {
+            throw new IllegalArgumentException("window must be 1..64, was " + window);
+        }
+        if (batchMax < 1) {
+            throw new IllegalArgumentException("batchMax must be at least 1, was " + batchMax);
+        }
+        if (capacity < batchMax || Integer.bitCount(capacity) != 1) {
+            throw new IllegalArgumentException("capacity must be a power of two and at least batchMax ("
+                    + batchMax + "), was " + capacity);
+        }
+        if (retryMillis < 1) {
+            throw new IllegalArgumentException("retryMillis must be at least 1, was " + retryMillis);
+        }
+    }
+
+    public static LinkSettings defaults() {
+        return new LinkSettings(4, 4096, 1 << 20, 200);
+    }
+
+    public LinkSettings withWindow(int newWindow) {
+        return new LinkSettings(newWindow, batchMax, capacity, retryMillis);
+    }
+}

@@ -1,0 +1,75 @@
+package org.fdnet.corba;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.fdnet.netinfo.ConnectionInfo;
+import org.fdnet.netinfo.NodeInfo;
+import org.fdnet.netinfo.NodeRef;
+
+/**
+ * What a host needs from the engine that runs its share of a network: the seam between CORBA
+ * ({@link HostServant}) and the single-host runtime. Every method may be called from any ORB thread.
+ *
+ * <p>Values written locally reach observers with origin {@code null}; values that arrive over a link
+ * are {@linkplain #inject injected} with the host they came from as origin, so a link never sends a
+ * value back where it came from.
+ */
+public interface LocalNetwork {
+
+    /** Instantiates {@code node} as {@code ref}; the host has already checked that its class is allowed. */
+    void create(NodeRef ref, NodeInfo node);
+
+    /**
+     * Creates {@code nodes} of {@code module} and makes {@code connections} (declared in that module) as
+     * one change: a Relation starts with its connections in place. All or nothing.
+     */
+    default void load(String module, List<NodeInfo> nodes, List<ConnectionInfo> connections) {
+        List<NodeRef> created = new ArrayList<>();
+        try {
+            for (NodeInfo n : nodes) {
+                NodeRef ref = new NodeRef(module, n.name());
+                create(ref, n);
+                created.add(ref);
+            }
+            connections.forEach(this::connect);
+        } catch (RuntimeException e) {
+            created.forEach(this::destroy);
+            throw e;
+        }
+    }
+
+    /** Creates the local shadow of a Data that lives on another host; it holds values, loads no class. */
+    void createStandIn(NodeRef ref, NodeInfo node);
+
+    /** @throws java.util.NoSuchElementException when there is no such node */
+    void destroy(NodeRef ref);
+
+    /** The nodes running here, stand-ins included. */
+    List<NodeRef> nodes();
+
+    /** Whether {@code ref} is declared here: running, or a stand-in waiting for a local connection. */
+    boolean knows(NodeRef ref);
+
+    /** Joins two local nodes (either may be a stand-in). */
+    void connect(ConnectionInfo connection);
+
+    void disconnect(ConnectionInfo connection);
+
+    /** The Data's current value, or {@code null} before its first. */
+    Object read(NodeRef data);
+
+    /** A write from outside the network (an operator, a test): observers see origin {@code null}. */
+    void write(NodeRef data, Object value);
+
+    /** A value that arrived over a link from {@code originHost}: set it and tell observers in order. */
+    void inject(NodeRef data, Object value, String originHost);
+
+    /** Tells {@code observer} every value of {@code data} from now on, in order; close to stop. */
+    AutoCloseable observe(NodeRef data, ValueObserver observer);
+
+    /** Receives every value of one Data on the thread that set it; must not block for long. */
+    @FunctionalInterface
+    interface ValueObserver {
+        void onValue(Object value, String originHost);
+    }
+}

@@ -1,0 +1,125 @@
+package org.fdnet.corba;
+
+import java.nio.file.Path;
+import java.util.Objects;
+import java.util.Properties;
+
+/**
+ * Every setting of an FDNet ORB in one typed place: the JacORB property keys live here and nowhere else.
+ * Immutable; the {@code with…} methods validate and return a copy.
+ *
+ * <p>Defaults are chosen for a robot network on a LAN: bind to 127.0.0.1 (nothing is exposed until the
+ * user says {@code --bind}), fail a call to a dead host in well under a second (JacORB's default retries
+ * for 2.5 s), and keep JacORB's request queue far above what the bounded link windows can fill.
+ *
+ * @param bindAddress     the address the ORB listens on and writes into its object references
+ * @param port            the listening port; 0 picks a free one
+ * @param namingReference the {@code corbaloc} of the naming service, or {@code null} when not needed
+ * @param callTimeoutMillis how long a two-way call may wait for its reply before it fails
+ * @param poaQueueMax     JacORB's per-POA request queue; calls beyond it are refused, never queued
+ * @param poaThreadsMax   threads serving requests
+ */
+public record OrbSettings(String bindAddress, int port, String namingReference, int callTimeoutMillis,
+                          int poaQueueMax, int poaThreadsMax) {
+
+    public static final String LOOPBACK = "127.0.0.1";
+
+    // JacORB and OMG property keys.
+    private static final String ORB_CLASS = "org.omg.CORBA.ORBClass";
+    private static final String ORB_SINGLETON_CLASS = "org.omg.CORBA.ORBSingletonClass";
+    private static final String LISTEN_ADDRESS = "OAIAddr";
+    private static final String LISTEN_PORT = "OAPort";
+    private static final String NAMING_INIT_REF = "ORBInitRef.NameService";
+    private static final String REPLY_TIMEOUT = "jacorb.connection.client.pending_reply_timeout";
+    private static final String CONNECT_TIMEOUT = "jacorb.connection.client.connect_timeout";
+    private static final String RETRIES = "jacorb.retries";
+    private static final String RETRY_INTERVAL = "jacorb.retry_interval";
+    private static final String POA_QUEUE_MAX = "jacorb.poa.queue_max";
+    private static final String POA_QUEUE_MIN = "jacorb.poa.queue_min";
+    private static final String POA_THREADS_MAX = "jacorb.poa.thread_pool_max";
+    private static final String POA_THREADS_MIN = "jacorb.poa.thread_pool_min";
+    private static final String NAMING_PRINT_IOR = "jacorb.naming.print_ior";
+    private static final String NAMING_KEY = "jacorb.orb.objectKeyMap.NameService";
+    private static final String NAMING_DB_DIR = "jacorb.naming.db_dir";
+
+    public OrbSettings {
+        Objects.requireNonNull(bindAddress, "bindAddress");
+        if (bindAddress.isBlank()) {
+            throw new IllegalArgumentException("bindAddress must not be blank");
+        }
+        if (port < 0 || port > 65535) {
+            throw new IllegalArgumentException("port must be 0..65535, was " + port);
+        }
+        if (callTimeoutMillis < 1) {
+            throw new IllegalArgumentException("callTimeoutMillis must be at least 1, was " + callTimeoutMillis);
+        }
+        if (poaQueueMax < 1) {
+            throw new IllegalArgumentException("poaQueueMax must be at least 1, was " + poaQueueMax);
+        }
+        if (poaThreadsMax < 1) {
+            throw new IllegalArgumentException("poaThreadsMax must be at least 1, was " + poaThreadsMax);
+        }
+    }
+
+    /** Loopback, any free port, no naming service. */
+    public static OrbSettings defaults() {
+        return new OrbSettings(LOOPBACK, 0, null, 5_000, 10_000, 32);
+    }
+
+    /** {@code corbaloc::ADDRESS:PORT/NameService}. */
+    public static String namingCorbaloc(String address, int port) {
+        return "corbaloc::" + address + ":" + port + "/NameService";
+    }
+
+    public OrbSettings withBindAddress(String address) {
+        return new OrbSettings(address, port, namingReference, callTimeoutMillis, poaQueueMax, poaThreadsMax);
+    }
+
+    public OrbSettings withPort(int newPort) {
+        return new OrbSettings(bindAddress, newPort, namingReference, callTimeoutMillis, poaQueueMax, poaThreadsMax);
+    }
+
+    public OrbSettings withNaming(String corbaloc) {
+        return new OrbSettings(bindAddress, port, corbaloc, callTimeoutMillis, poaQueueMax, poaThreadsMax);
+    }
+
+    public OrbSettings withCallTimeoutMillis(int millis) {
+        return new OrbSettings(bindAddress, port, namingReference, millis, poaQueueMax, poaThreadsMax);
+    }
+
+    /** The properties handed to {@code ORB.init}. */
+    public Properties toOrbProperties() {
+        Properties p = new Properties();
+        p.setProperty(ORB_CLASS, "org.jacorb.orb.ORB");
+        p.setProperty(ORB_SINGLETON_CLASS, "org.jacorb.orb.ORBSingleton");
+        p.setProperty(LISTEN_ADDRESS, bindAddress);
+        if (port != 0) {
+            p.setProperty(LISTEN_PORT, Integer.toString(port));
+        }
+        if (namingReference != null) {
+            p.setProperty(NAMING_INIT_REF, namingReference);
+        }
+        p.setProperty(REPLY_TIMEOUT, Integer.toString(callTimeoutMillis));
+        p.setProperty(CONNECT_TIMEOUT, Integer.toString(Math.min(callTimeoutMillis, 2_000)));
+        // A dead host must be noticed quickly; links and the coordinator retry on their own terms.
+        p.setProperty(RETRIES, "0");
+        p.setProperty(RETRY_INTERVAL, "100");
+        p.setProperty(POA_QUEUE_MAX, Integer.toString(poaQueueMax));
+        p.setProperty(POA_QUEUE_MIN, Integer.toString(Math.max(1, poaQueueMax / 2)));
+        p.setProperty(POA_THREADS_MAX, Integer.toString(poaThreadsMax));
+        p.setProperty(POA_THREADS_MIN, Integer.toString(Math.min(4, poaThreadsMax)));
+        return p;
+    }
+
+    /**
+     * The extra properties JacORB's NameServer needs to answer {@code corbaloc::…/NameService}; it keeps
+     * its bindings in {@code stateDirectory} (by default it would write them into the working directory).
+     */
+    public Properties toNamingServerProperties(Path stateDirectory) {
+        Properties p = toOrbProperties();
+        p.setProperty(NAMING_DB_DIR, stateDirectory.toString());
+        p.setProperty(NAMING_PRINT_IOR, "false");
+        p.setProperty(NAMING_KEY, "StandardNS/NameServer-POA/_root");
+        return p;
+    }
+}

@@ -1,0 +1,224 @@
+package org.fdnet.corba;
+
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.NoSuchElementException;
+import java.util.Set;
+import org.fdnet.event.ValueType;
+import org.fdnet.netinfo.ConnectionInfo;
+import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.netinfo.NodeInfo;
+import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.ChangeOutcome;
+import org.fdnet.runtime.Controller;
+import org.fdnet.runtime.NetworkEdit;
+import org.fdnet.runtime.Placement;
+import org.fdnet.runtime.RemoteLink;
+import org.fdnet.runtime.RuntimeNetwork;
+import org.fdnet.runtime.RuntimeOptions;
+import org.fdnet.runtime.RuntimeStartException;
+import org.fdnet.runtime.Value;
+
+/**
+ * A host's share of a distributed network, run by the single-host engine ({@link RuntimeNetwork}).
+ *
+ * <p>The host keeps a definition of its own: nodes created here carry this host's name; stand-ins carry
+ * their home host's, so the engine's {@link Placement} makes them local shadows (it does so once a local
+ * Relation is connected to them). Every request is a change request of the engine's {@link Controller};
+ * a refused one throws with the engine's reason. Values injected from a link are set with their origin
+ * held in a thread-local: the engine tells its observers on the writing thread, so each observer learns
+ * where the value came from and a link never echoes a value back to its sender.
+ */
+public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
+    private static final ThreadLocal<String> ORIGIN = new ThreadLocal<>();
+
+    private final String hostName;
+    private final RuntimeNetwork runtime;
+    private final Controller controller;
+
+    private RuntimeLocalNetwork(String hostName, RuntimeNetwork runtime) {
+        this.hostName = hostName;
+        this.runtime = runtime;
+        this.controller = runtime.controller();
+    }
+
+    /** Starts an empty engine whose local nodes are those placed on {@code hostName}. */
+    public static RuntimeLocalNetwork start(String hostName, RuntimeOptions options) {
+        options.placement(Placement.forHostNames(Set.of(hostName)));
+        try {
+            return new RuntimeLocalNetwork(hostName, RuntimeNetwork.start(new NetworkInfo(hostName), options));
+        } catch (RuntimeStartException e) {
+            throw new IllegalStateException("the engine of host " + hostName + " did not start: " + e.problems(), e);
+        }
+    }
+
+    public RuntimeNetwork runtime() {
+        return runtime;
+    }
+
+    @Override
+    public void create(NodeRef ref, NodeInfo node) {
+        ensureModule(ref.module());
+        apply("create " + ref, n -> n.addNode(ref.module(), node.withHost(hostName)));
+    }
+
+    @Override
+    public void load(String module, List<NodeInfo> nodes, List<ConnectionInfo> connections) {
+        boolean known = runtime.readDefinition(d -> d.module(module)) != null;
+        apply("load " + module + " on " + hostName, n -> {
+            if (!known) {
+                n.addModule(module, true);
+            }
+            for (NodeInfo node : nodes) {
+                n.addNode(module, node.withHost(hostName));
+            }
+            for (ConnectionInfo c : connections) {
+                n.addConnection(module, c);
+            }
+        });
+        if (!controller.loadedModules().contains(module)) {
+            ChangeOutcome loaded = controller.load(module);
+            if (!loaded.executed()) {
+                throw new IllegalStateException(loaded.reason());
+            }
+        }
+    }
+
+    @Override
+    public void createStandIn(NodeRef ref, NodeInfo node) {
+        ensureModule(ref.module());
+        if (runtime.readDefinition(d -> d.node(ref)) != null) {
+            return; // already declared: several connections share one stand-in
+        }
+        apply("declare remote " + ref, n -> n.addNode(ref.module(), node));
+    }
+
+    @Override
+    public void destroy(NodeRef ref) {
+        if (runtime.readDefinition(d -> d.node(ref)) == null) {
+            throw new NoSuchElementException(ref.toString());
+        }
+        apply("destroy " + ref, n -> n.deleteNode(ref));
+    }
+
+    @Override
+    public List<NodeRef> nodes() {
+        Set<NodeRef> refs = new LinkedHashSet<>();
+        Set<String> loaded = controller.loadedModules();
+        runtime.readDefinition(d -> {
+            for (ModuleInfo m : d.modules()) {
+                if (loaded.contains(m.name())) {
+                    for (NodeInfo n : m.nodes()) {
+                        if (n.host().equals(hostName)) {
+                            refs.add(new NodeRef(m.name(), n.name()));
+                        }
+                    }
+                }
+            }
+            return null;
+        });
+        for (RemoteLink link : controller.remoteLinks()) {
+            if (link.standIn() && !link.broken()) {
+                refs.add(link.connection().data());
+            }
+        }
+        return new ArrayList<>(refs);
+    }
+
+    @Override
+    public boolean knows(NodeRef ref) {
+        return runtime.readDefinition(d -> d.node(ref)) != null;
+    }
+
+    @Override
+    public void connect(ConnectionInfo connection) {
+        apply("connect " + connection, n -> n.addConnection(connection.relation().module(), connection));
+    }
+
+    @Override
+    public void disconnect(ConnectionInfo connection) {
+        apply("disconnect " + connection, n -> n.deleteConnection(connection.relation().module(), connection));
+    }
+
+    @Override
+    public Object read(NodeRef data) {
+        Value v = controller.value(data);
+        return v == null ? null : toJava(v);
+    }
+
+    @Override
+    public void write(NodeRef data, Object value) {
+        controller.setValue(data, toRuntime(value));
+    }
+
+    @Override
+    public void inject(NodeRef data, Object value, String originHost) {
+        ORIGIN.set(originHost);
+        try {
+            controller.setValue(data, toRuntime(value));
+        } finally {
+            ORIGIN.remove();
+        }
+    }
+
+    @Override
+    public AutoCloseable observe(NodeRef data, ValueObserver observer) {
+        return controller.observe(data, (ref, id, value) -> observer.onValue(toJava(value), ORIGIN.get()));
+    }
+
+    private void ensureModule(String module) {
+        if (runtime.readDefinition(d -> d.module(module)) != null) {
+            return;
+        }
+        apply("add module " + module, n -> n.addModule(module, true));
+        ChangeOutcome loaded = controller.load(module);
+        if (!loaded.executed()) {
+            throw new IllegalStateException(loaded.reason());
+        }
+    }
+
+    private void apply(String what, NetworkEdit edit) {
+        ChangeOutcome outcome = controller.apply(what, edit);
+        if (!outcome.executed()) {
+            throw new IllegalStateException(outcome.reason());
+        }
+    }
+
+    static Object toJava(Value v) {
+        return switch (v.type()) {
+            case LONG -> v.asLong();
+            case DOUBLE -> v.asDouble();
+            case BOOLEAN -> v.asBoolean();
+            case STRING -> v.text();
+            case BYTES -> v.asBytes();
+            case DOUBLES -> v.asDoubles();
+        };
+    }
+
+    static Value toRuntime(Object o) {
+        if (o instanceof Long l) {
+            return Value.of(l);
+        } else if (o instanceof Double d) {
+            return Value.of(d);
+        } else if (o instanceof Boolean b) {
+            return Value.of(b);
+        } else if (o instanceof String s) {
+            return Value.of(s);
+        } else if (o instanceof byte[] bs) {
+            return Value.ofBytes(bs);
+        } else if (o instanceof double[] ds) {
+            return Value.ofDoubles(ds);
+        } else if (o instanceof Number n) {
+            return Value.of(n.longValue());
+        }
+        throw new IllegalArgumentException("a " + (o == null ? "null" : o.getClass().getName())
+                + " is not a value of type " + List.of(ValueType.values()));
+    }
+
+    @Override
+    public void close() {
+        runtime.close();
+    }
+}

@@ -1,0 +1,17 @@
+package org.fdnet.corba.cli;
+
+import java.util.List;
+import org.fdnet.cli.CommandProvider;
+
+/** Adds {@code naming}, {@code host} and {@code bench corba} to {@code fdnet}. */
+public final class CorbaCommandProvider implements CommandProvider {
+    @Override
+    public List<Object> commands() {
+        return List.of(new NamingCommand(), new HostCommand());
+    }
+
+    @Override
+    public List<Object> benchmarks() {
+        return List.of(new CorbaBenchmark());
+    }
+}

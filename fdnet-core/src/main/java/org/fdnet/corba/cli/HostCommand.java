@@ -1,0 +1,54 @@
+package org.fdnet.corba.cli;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import org.fdnet.corba.ClassPolicy;
+import org.fdnet.corba.HostProcess;
+import org.fdnet.corba.HostUnreachableException;
+import org.fdnet.corba.LinkSettings;
+import org.fdnet.corba.LocalNetworks;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/** {@code fdnet host}: one host of distributed networks, registered in the naming service by name. */
+@Command(name = "host", mixinStandardHelpOptions = true,
+        description = "Run an FDNet host: it registers NAME in the naming service and runs the nodes placed on it.")
+public final class HostCommand implements Callable<Integer> {
+    @Option(names = "--name", required = true, description = "the host name nodes use in their <host> element")
+    String name;
+
+    @Option(names = "--port", description = "port to listen on (default: any free port)", defaultValue = "0")
+    int port;
+
+    @Option(names = "--allow-path", description = "a folder whose node classes remote creates may load (repeatable)")
+    List<Path> allowedPaths = new ArrayList<>();
+
+    @Mixin
+    NamingOptions naming;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        HostProcess host;
+        try {
+            host = HostProcess.start(name, naming.orbSettings().withPort(port),
+                    LocalNetworks.forHost(name, allowedPaths), new ClassPolicy(allowedPaths), LinkSettings.defaults());
+        } catch (HostUnreachableException | IllegalArgumentException | IllegalStateException e) {
+            spec.commandLine().getErr().println("fdnet host " + name + ": " + e.getMessage()
+                    + (e instanceof HostUnreachableException ? " (is `fdnet naming` running there?)" : ""));
+            return 1;
+        }
+        Runtime.getRuntime().addShutdownHook(new Thread(host::close, "fdnet-host-shutdown"));
+        System.out.println("fdnet host " + name + " ready (naming " + naming.corbaloc() + ")");
+        System.out.flush();
+        NamingCommand.awaitStop();
+        return 0;
+    }
+}

@@ -1,0 +1,27 @@
+/**
+ * Distribution: one FDNetwork over several host processes, through CORBA (JacORB 3.9, {@code idl/fdnet.idl}).
+ *
+ * <pre>
+ *   fdnet run FILE ── DeploymentPlan (node → host; stand-ins; links) ── NetworkDeployment
+ *        │                     createNode / createStandIn / connect / acceptLink / forward, then ping
+ *        ▼
+ *   HostDirectory (naming service: "flyer", "crawler" …)
+ *        │
+ *   Host "flyer" (HostServant over its LocalNetwork)           Host "crawler"
+ *     Data main/map ──observer──▶ OutboundLink ═══deliver(ValueBatch)══▶ InboundLink ──inject──▶ stand-in main/map
+ *                                  ring + window of                      in sequence order        │ Reader
+ *                                  two-way calls ◀═══ next expected seq ═╝                        ▼
+ *                                                                                         Relation main/plan
+ * </pre>
+ *
+ * Same-host connections never leave their host's engine. Cross-host values go in batches over two-way
+ * calls with at most {@link org.fdnet.corba.LinkSettings#window()} in flight (a oneway flood overflows
+ * JacORB's POA queue and drops calls); sequence numbers keep them in order, and a value leaves the sender
+ * only when the receiver has applied it, so a restarted receiver gets everything it missed.
+ *
+ * <p>Class map: {@link org.fdnet.corba.OrbRuntime} starts ORBs (JDK 17 fixes) from
+ * {@link org.fdnet.corba.OrbSettings} (every JacORB key); {@link org.fdnet.corba.NamingService} runs
+ * JacORB's NameServer; {@link org.fdnet.corba.HostProcess} is one host; {@link org.fdnet.corba.LocalNetwork}
+ * is the seam to the engine that runs a host's nodes.
+ */
+package org.fdnet.corba;

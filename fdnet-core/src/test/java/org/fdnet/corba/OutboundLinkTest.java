@@ -1,0 +1,93 @@
+package org.fdnet.corba;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import org.fdnet.corba.idl.ValueBatch;
+import org.fdnet.corba.idl.ValueSink;
+import org.fdnet.corba.idl.ValueSinkHelper;
+import org.fdnet.corba.idl.ValueSinkPOA;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/** The sending end of a link against a sink servant in this JVM, over a real ORB. */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class OutboundLinkTest {
+    private final OrbRuntime orb = OrbRuntime.start(OrbSettings.defaults().withCallTimeoutMillis(20_000));
+    private OutboundLink link;
+
+    @AfterEach
+    void stop() {
+        if (link != null) {
+            link.close();
+        }
+        orb.close();
+    }
+
+    private static final OutboundLink.StateListener SILENT = new OutboundLink.StateListener() {
+        @Override
+        public void broken(OutboundLink l, String reason) {
+        }
+
+        @Override
+        public void restored(OutboundLink l) {
+        }
+    };
+
+    @Test
+    void shouldBatchValuesAndFreeThemOnlyWhenAcknowledged() throws Exception {
+        List<Long> batchSizes = new CopyOnWriteArrayList<>();
+        ValueSink sink = ValueSinkHelper.narrow(orb.activate(new ValueSinkPOA() {
+            @Override
+            public long deliver(ValueBatch batch) {
+                batchSizes.add((long) batch.values.length);
+                return batch.firstSeq + batch.values.length;
+            }
+        }));
+        link = new OutboundLink(1, "test#1#1", "test", sink, new LinkSettings(2, 64, 1024, 100), SILENT);
+
+        for (long i = 0; i < 10_000; i++) {
+            link.offer(i);
+        }
+
+        long deadline = System.currentTimeMillis() + 10_000;
+        while (link.acknowledged() < 10_000 && System.currentTimeMillis() < deadline) {
+            Thread.sleep(10);
+        }
+        assertThat(link.acknowledged()).isEqualTo(10_000);
+        assertThat(link.pending()).isZero();
+        assertThat(batchSizes.stream().mapToLong(Long::longValue).sum()).isEqualTo(10_000);
+        assertThat(batchSizes).allMatch(n -> n <= 64).anyMatch(n -> n > 1);
+    }
+
+    @Test
+    void shouldNotBlockAWriterForeverWhenThePeerStopsAcknowledging() throws Exception {
+        CountDownLatch release = new CountDownLatch(1);
+        ValueSink sink = ValueSinkHelper.narrow(orb.activate(new ValueSinkPOA() {
+            @Override
+            public long deliver(ValueBatch batch) {
+                try {
+                    release.await(30, TimeUnit.SECONDS);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+                return batch.firstSeq + batch.values.length;
+            }
+        }));
+        link = new OutboundLink(2, "test#1#2", "stuck", sink, new LinkSettings(1, 4, 16, 100), SILENT);
+
+        long start = System.nanoTime();
+        for (long i = 0; i < 100; i++) {
+            link.offer(i);
+        }
+        long waitedMillis = (System.nanoTime() - start) / 1_000_000;
+        release.countDown();
+
+        assertThat(waitedMillis).isBetween(OutboundLink.MAX_WRITER_WAIT_MILLIS - 100, 15_000L);
+        assertThat(link.lost()).isEqualTo(100 - 16);
+    }
+}

@@ -10,6 +10,11 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import org.fdnet.event.EventSink;
+import org.fdnet.event.NetworkEvent;
+import org.fdnet.event.client.ClientStatus;
+import org.fdnet.event.client.LoggerClient;
+import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
@@ -71,6 +76,11 @@ public final class RunCommand implements Callable<Integer> {
     @Option(names = "--trace", description = "print every event as it happens")
     boolean trace;
 
+    @Option(names = "--logger", paramLabel = "HOST:PORT",
+            description = "also record every event with the network state logger at HOST:PORT (see fdnet logger);"
+                    + " while it is slow or away events wait in memory and a bounded disk journal")
+    String logger;
+
     @Mixin
     DistributionOptions distribution;
 
@@ -90,8 +100,24 @@ public final class RunCommand implements Callable<Integer> {
             return 1;
         }
         EventCounter counter = new EventCounter();
+        LoggerClient loggerClient = null;
+        if (logger != null) {
+            try {
+                loggerClient = new LoggerClient(LoggerClientSettings.parseAddress(logger, "fdnet run " + name(definition)));
+            } catch (IllegalArgumentException e) {
+                err.println("--logger " + logger + ": " + e.getMessage());
+                err.flush();
+                return 2;
+            }
+            out.printf("recording events with the logger at %s (run %s)%n", logger, loggerClient.run());
+        }
         if (distribution.appliesTo(definition)) {
-            return distribution.run(file, definition, duration, allowedRoots, sets, loads, counter, out, err);
+            EventSink events = loggerClient == null ? counter : both(counter, loggerClient);
+            try {
+                return distribution.run(file, definition, duration, allowedRoots, sets, loads, events, out, err);
+            } finally {
+                closeLogger(out, loggerClient);
+            }
         }
         RuntimeOptions options = RuntimeOptions.defaults().sink(counter)
                 .classLoading(ClassLoadingPolicy.forNetworkFile(file, allowedRoots));
@@ -100,6 +126,9 @@ public final class RunCommand implements Callable<Integer> {
         }
         if (trace) {
             options.sink(new TracePrinter(out, System.currentTimeMillis() * 1000));
+        }
+        if (loggerClient != null) {
+            options.sink(loggerClient);
         }
         out.printf("starting %s (%s)%n", name(definition), file);
         out.flush();
@@ -111,6 +140,7 @@ public final class RunCommand implements Callable<Integer> {
             err.println(file + ": the network cannot start:");
             e.problems().forEach(p -> err.println("  " + p));
             err.flush();
+            closeLogger(out, loggerClient);
             return 1;
         }
         CountDownLatch stop = new CountDownLatch(1);
@@ -143,6 +173,7 @@ public final class RunCommand implements Callable<Integer> {
             summary(out, definition, network, counter, started);
         } finally {
             network.close();
+            closeLogger(out, loggerClient);
             summarized.countDown();
             try {
                 Runtime.getRuntime().removeShutdownHook(hook);
@@ -151,6 +182,41 @@ public final class RunCommand implements Callable<Integer> {
             }
         }
         return 0;
+    }
+
+    /** One sink feeding two (the distributed run takes a single sink). */
+    private static EventSink both(EventSink first, EventSink second) {
+        return new EventSink() {
+            @Override
+            public void accept(NetworkEvent event) {
+                first.accept(event);
+                second.accept(event);
+            }
+
+            @Override
+            public void flush() {
+                first.flush();
+                second.flush();
+            }
+        };
+    }
+
+    /** Waits (bounded) until the logger committed every event, then says how it went. */
+    private void closeLogger(PrintWriter out, LoggerClient client) {
+        if (client == null) {
+            return;
+        }
+        out.printf("waiting for the logger at %s to commit the run's events ...%n", logger);
+        out.flush();
+        client.close();
+        ClientStatus s = client.status();
+        if (s.acked() == s.accepted() && s.lost() == 0) {
+            out.printf(Locale.ROOT, "logger: all %,d events of run %s committed%n", s.accepted(), client.run());
+        } else {
+            out.printf(Locale.ROOT, "logger: %,d of %,d events of run %s committed, %,d not confirmed, %,d LOST"
+                    + " (journal full)%n", s.acked(), s.accepted(), client.run(), s.accepted() - s.acked(), s.lost());
+        }
+        out.flush();
     }
 
     private boolean applyRequests(Controller controller, PrintWriter err) {

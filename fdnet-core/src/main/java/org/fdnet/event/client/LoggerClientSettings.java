@@ -1,0 +1,71 @@
+package org.fdnet.event.client;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.Objects;
+
+/**
+ * How a core talks to its logger.
+ *
+ * @param host            the logger's receiver address
+ * @param port            the logger's receiver port (5555 by default)
+ * @param coreName        shown in the logger's client list and stored with the run
+ * @param memoryEvents    events kept in memory (sent or not) before new ones spill to the journal
+ * @param journalDirectory where the spill journal lives (deleted on close)
+ * @param journalBytes    the journal's bound; beyond it events are lost, counted and reported
+ * @param reconnectDelay  wait between attempts to reach an absent logger
+ * @param flushTimeout    how long {@link LoggerClient#flush()} and close wait for the logger's commits
+ */
+public record LoggerClientSettings(String host, int port, String coreName, int memoryEvents,
+                                   Path journalDirectory, long journalBytes, Duration reconnectDelay,
+                                   Duration flushTimeout) {
+    public LoggerClientSettings {
+        Objects.requireNonNull(host, "host");
+        Objects.requireNonNull(coreName, "coreName");
+        Objects.requireNonNull(journalDirectory, "journalDirectory");
+        if (port < 1 || port > 65535) {
+            throw new IllegalArgumentException("port must be within 1..65535, was " + port);
+        }
+        if (memoryEvents < 1000) {
+            throw new IllegalArgumentException("memoryEvents must be at least 1000, was " + memoryEvents);
+        }
+        if (journalBytes < 0) {
+            throw new IllegalArgumentException("journalBytes must be at least 0, was " + journalBytes);
+        }
+    }
+
+    /** Defaults: 200,000 events in memory, a 1 GiB journal under the temp directory, 500 ms reconnect. */
+    public static LoggerClientSettings defaults(String host, int port, String coreName) {
+        Path dir = Path.of(System.getProperty("java.io.tmpdir"), "fdnet-journal-" + ProcessHandle.current().pid()
+                + "-" + System.nanoTime());
+        return new LoggerClientSettings(host, port, coreName, 200_000, dir, 1L << 30,
+                Duration.ofMillis(500), Duration.ofSeconds(60));
+    }
+
+    public LoggerClientSettings withMemoryEvents(int events) {
+        return new LoggerClientSettings(host, port, coreName, events, journalDirectory, journalBytes, reconnectDelay, flushTimeout);
+    }
+
+    public LoggerClientSettings withJournal(Path directory, long bytes) {
+        return new LoggerClientSettings(host, port, coreName, memoryEvents, directory, bytes, reconnectDelay, flushTimeout);
+    }
+
+    public LoggerClientSettings withFlushTimeout(Duration timeout) {
+        return new LoggerClientSettings(host, port, coreName, memoryEvents, journalDirectory, journalBytes, reconnectDelay, timeout);
+    }
+
+    /** Parses {@code HOST:PORT} (the form of {@code fdnet run --logger}). */
+    public static LoggerClientSettings parseAddress(String hostPort, String coreName) {
+        int colon = hostPort.lastIndexOf(':');
+        if (colon <= 0 || colon == hostPort.length() - 1) {
+            throw new IllegalArgumentException("logger address must be HOST:PORT, was '" + hostPort + "'");
+        }
+        int port;
+        try {
+            port = Integer.parseInt(hostPort.substring(colon + 1));
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("logger port must be a number, was '" + hostPort.substring(colon + 1) + "'", e);
+        }
+        return defaults(hostPort.substring(0, colon), port, coreName);
+    }
+}

@@ -1,0 +1,233 @@
+package org.fdnet.event.client;
+
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Consumer;
+import org.fdnet.event.NetworkEvent;
+import org.fdnet.event.wire.ErrorFrame;
+import org.fdnet.event.wire.EventCodec;
+import org.fdnet.event.wire.Frame;
+import org.fdnet.event.wire.FrameReader;
+import org.fdnet.event.wire.FrameWriter;
+import org.fdnet.event.wire.Hello;
+import org.fdnet.event.wire.LoggedNode;
+import org.fdnet.event.wire.MessageType;
+import org.fdnet.event.wire.Protocol;
+import org.fdnet.event.wire.ProtocolException;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * A viewer's connection to the logger's sender server: node names, history of nodes over a time range,
+ * and live monitoring. Requests may come from any thread; one reader thread dispatches the answers and
+ * hands monitored events to the listener (keep the listener quick).
+ *
+ * <pre>
+ *   nodes("Arm/")  ─LIST_NODES─▶ logger ─NODE_LIST─▶ List&lt;LoggedNode&gt;
+ *   history(ids, from, to) ─HISTORY─▶ logger ─HISTORY_CHUNK*, HISTORY_END─▶ events in time order
+ *   monitor(ids) ─MONITOR─▶ logger ─MONITOR_EVENTS (live)─▶ listener
+ * </pre>
+ */
+public final class ViewerClient implements AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(ViewerClient.class);
+
+    private final Socket socket;
+    private final OutputStream out;
+    private final FrameWriter writer = new FrameWriter();
+    private final AtomicInteger requests = new AtomicInteger();
+    private final Map<Integer, Request> open = new ConcurrentHashMap<>();
+    private final Consumer<NetworkEvent> monitorListener;
+    private final Thread reader;
+    private volatile IOException failure;
+
+    private static final class Request {
+        final List<Object> items = new ArrayList<>();
+        final CompletableFuture<List<Object>> done = new CompletableFuture<>();
+    }
+
+    public ViewerClient(String host, int port, String name, Consumer<NetworkEvent> monitorListener) throws IOException {
+        this.monitorListener = monitorListener;
+        socket = new Socket();
+        socket.setTcpNoDelay(true);
+        socket.connect(new InetSocketAddress(host, port), 5000);
+        out = new BufferedOutputStream(socket.getOutputStream());
+        FrameReader in = new FrameReader(new BufferedInputStream(socket.getInputStream()), Protocol.DEFAULT_MAX_FRAME_BYTES);
+        synchronized (writer) {
+            Hello.viewer(name).write(writer);
+            writer.writeTo(out);
+            out.flush();
+        }
+        Frame welcome = in.read();
+        if (welcome == null || welcome.type() != MessageType.WELCOME) {
+            String why = welcome != null && welcome.type() == MessageType.ERROR ? ErrorFrame.read(welcome).message()
+                    : "no WELCOME";
+            socket.close();
+            throw new IOException("logger at " + host + ":" + port + " refused the viewer: " + why);
+        }
+        reader = new Thread(() -> readLoop(in), "fdnet-viewer-client");
+        reader.setDaemon(true);
+        reader.start();
+    }
+
+    /** Nodes whose name matches: {@code ""} all, {@code Node} any module, {@code Module/Node} exactly. */
+    public List<LoggedNode> nodes(String filter) throws IOException {
+        int id = requests.incrementAndGet();
+        List<Object> items = call(id, w -> w.begin(MessageType.LIST_NODES).putInt(id).putString(filter));
+        List<LoggedNode> nodes = new ArrayList<>(items.size());
+        items.forEach(o -> nodes.add((LoggedNode) o));
+        return nodes;
+    }
+
+    /** Every event of the nodes with {@code from <= time <= to}, in time order (cache and database merged). */
+    public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws IOException {
+        int id = requests.incrementAndGet();
+        List<Object> items = call(id, w -> {
+            w.begin(MessageType.HISTORY).putInt(id).putInt(sourceIds.length);
+            for (int s : sourceIds) {
+                w.putInt(s);
+            }
+            w.putLong(from).putLong(to);
+        });
+        List<NetworkEvent> events = new ArrayList<>(items.size());
+        items.forEach(o -> events.add((NetworkEvent) o));
+        return events;
+    }
+
+    /** Starts streaming the nodes' new events to the listener. */
+    public void monitor(int... sourceIds) throws IOException {
+        send(w -> {
+            w.begin(MessageType.MONITOR).putInt(sourceIds.length);
+            for (int s : sourceIds) {
+                w.putInt(s);
+            }
+        });
+    }
+
+    /** Stops streaming the nodes (none given: all). */
+    public void unmonitor(int... sourceIds) throws IOException {
+        send(w -> {
+            w.begin(MessageType.UNMONITOR).putInt(sourceIds.length);
+            for (int s : sourceIds) {
+                w.putInt(s);
+            }
+        });
+    }
+
+    private interface FrameBuilder {
+        void build(FrameWriter w);
+    }
+
+    private void send(FrameBuilder b) throws IOException {
+        if (failure != null) {
+            throw new IOException("viewer connection lost", failure);
+        }
+        synchronized (writer) {
+            b.build(writer);
+            writer.writeTo(out);
+            out.flush();
+        }
+    }
+
+    private List<Object> call(int id, FrameBuilder b) throws IOException {
+        Request r = new Request();
+        open.put(id, r);
+        send(b);
+        try {
+            return r.done.get(60, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted while waiting for the logger", e);
+        } catch (ExecutionException e) {
+            throw new IOException("logger request failed: " + e.getCause().getMessage(), e.getCause());
+        } catch (TimeoutException e) {
+            throw new IOException("logger did not answer within 60 s", e);
+        } finally {
+            open.remove(id);
+        }
+    }
+
+    private void readLoop(FrameReader in) {
+        try {
+            Frame f;
+            while ((f = in.read()) != null) {
+                dispatch(f);
+            }
+            failure = new IOException("logger closed the connection");
+        } catch (IOException e) {
+            failure = e;
+        } finally {
+            IOException why = failure != null ? failure : new IOException("connection closed");
+            open.values().forEach(r -> r.done.completeExceptionally(why));
+        }
+    }
+
+    private void dispatch(Frame f) throws IOException {
+        switch (f.type()) {
+            case HISTORY_CHUNK -> {
+                Request r = open.get(f.getInt());
+                int n = f.getCount(EventCodec.MIN_EVENT_BYTES);
+                for (int i = 0; i < n; i++) {
+                    NetworkEvent e = EventCodec.read(f);
+                    if (r != null) {
+                        r.items.add(e);
+                    }
+                }
+            }
+            case HISTORY_END -> {
+                Request r = open.get(f.getInt());
+                if (r != null) {
+                    r.done.complete(r.items);
+                }
+            }
+            case NODE_LIST -> {
+                Request r = open.get(f.getInt());
+                int n = f.getCount(14);
+                for (int i = 0; i < n; i++) {
+                    LoggedNode node = LoggedNode.read(f);
+                    if (r != null) {
+                        r.items.add(node);
+                    }
+                }
+                if (r != null) {
+                    r.done.complete(r.items);
+                }
+            }
+            case MONITOR_EVENTS -> {
+                int n = f.getCount(EventCodec.MIN_EVENT_BYTES);
+                for (int i = 0; i < n; i++) {
+                    monitorListener.accept(EventCodec.read(f));
+                }
+            }
+            case ERROR -> {
+                ErrorFrame err = ErrorFrame.read(f);
+                throw new IOException("logger closed the viewer connection: " + err.message());
+            }
+            default -> throw new ProtocolException("unexpected " + f.type() + " from the logger");
+        }
+    }
+
+    @Override
+    public void close() {
+        try {
+            socket.close();
+            reader.join(2000);
+        } catch (IOException e) {
+            LOG.debug("closing viewer socket: {}", e.getMessage());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}

@@ -1,0 +1,113 @@
+package org.fdnet.event.wire;
+
+import org.fdnet.event.DataValueEvent;
+import org.fdnet.event.NetworkCommand;
+import org.fdnet.event.NetworkCommandEvent;
+import org.fdnet.event.NetworkEvent;
+import org.fdnet.event.NodeNamedEvent;
+import org.fdnet.event.RelationValueEvent;
+import org.fdnet.event.ValueType;
+import org.fdnet.netinfo.NodeKind;
+import org.fdnet.netinfo.NodeRef;
+
+/**
+ * One event on the wire: {@code u8 kind, i32 sourceId, i64 time}, then per kind
+ * <ul>
+ *   <li>1 data: {@code u8 valueType, string value}</li>
+ *   <li>2 relation: {@code string value}</li>
+ *   <li>3 command: {@code string sourceType, u8 command (NetworkCommand ordinal), string paramsId, string paramsType}</li>
+ *   <li>4 named: {@code u8 nodeKind (1 data, 2 relation), string module, string node}</li>
+ * </ul>
+ */
+public final class EventCodec {
+    static final int DATA = 1;
+    static final int RELATION = 2;
+    static final int COMMAND = 3;
+    static final int NAMED = 4;
+    /** The smallest encoded event: kind, source, time and one empty string. */
+    public static final int MIN_EVENT_BYTES = 1 + 4 + 8 + 4;
+
+    private static final NetworkCommand[] COMMANDS = NetworkCommand.values();
+
+    private EventCodec() {
+    }
+
+    public static void write(FrameWriter w, NetworkEvent event) {
+        if (event instanceof DataValueEvent d) {
+            head(w, DATA, d);
+            w.putByte(d.type().code()).putString(d.value());
+        } else if (event instanceof RelationValueEvent r) {
+            head(w, RELATION, r);
+            w.putString(r.value());
+        } else if (event instanceof NetworkCommandEvent c) {
+            head(w, COMMAND, c);
+            w.putString(c.sourceType()).putByte(c.command().ordinal())
+                    .putString(c.paramsId()).putString(c.paramsType());
+        } else {
+            NodeNamedEvent n = (NodeNamedEvent) event;
+            head(w, NAMED, n);
+            w.putByte(n.kind() == NodeKind.DATA ? 1 : 2)
+                    .putString(n.name().module()).putString(n.name().node());
+        }
+    }
+
+    /** The same event with another source id: the logger maps a core's ids to global ones. */
+    public static NetworkEvent withSource(NetworkEvent event, int sourceId) {
+        if (event instanceof DataValueEvent d) {
+            return new DataValueEvent(sourceId, d.time(), d.type(), d.value());
+        } else if (event instanceof RelationValueEvent r) {
+            return new RelationValueEvent(sourceId, r.time(), r.value());
+        } else if (event instanceof NetworkCommandEvent c) {
+            return new NetworkCommandEvent(sourceId, c.time(), c.sourceType(), c.command(), c.paramsId(), c.paramsType());
+        }
+        NodeNamedEvent n = (NodeNamedEvent) event;
+        return new NodeNamedEvent(sourceId, n.time(), n.kind(), n.name());
+    }
+
+    private static void head(FrameWriter w, int kind, NetworkEvent e) {
+        w.putByte(kind).putInt(e.sourceId()).putLong(e.time());
+    }
+
+    public static NetworkEvent read(Frame f) throws ProtocolException {
+        int kind = f.getByte();
+        int source = f.getInt();
+        long time = f.getLong();
+        try {
+            return switch (kind) {
+                case DATA -> new DataValueEvent(source, time, valueType(f.getByte()), f.getString());
+                case RELATION -> new RelationValueEvent(source, time, f.getString());
+                case COMMAND -> new NetworkCommandEvent(source, time, f.getString(), command(f.getByte()),
+                        f.getString(), f.getString());
+                case NAMED -> named(f, source, time);
+                default -> throw new ProtocolException("malformed " + f.type() + " frame: unknown event kind " + kind);
+            };
+        } catch (IllegalArgumentException e) {
+            throw new ProtocolException("malformed " + f.type() + " frame: " + e.getMessage());
+        }
+    }
+
+    private static NodeNamedEvent named(Frame f, int source, long time) throws ProtocolException {
+        int kind = f.getByte();
+        if (kind != 1 && kind != 2) {
+            throw new ProtocolException("malformed " + f.type() + " frame: unknown node kind " + kind);
+        }
+        String module = f.getString();
+        String node = f.getString();
+        return new NodeNamedEvent(source, time, kind == 1 ? NodeKind.DATA : NodeKind.RELATION, new NodeRef(module, node));
+    }
+
+    private static ValueType valueType(int code) throws ProtocolException {
+        try {
+            return ValueType.fromCode(code);
+        } catch (IllegalArgumentException e) {
+            throw new ProtocolException("unknown value type code " + code);
+        }
+    }
+
+    private static NetworkCommand command(int ordinal) throws ProtocolException {
+        if (ordinal >= COMMANDS.length) {
+            throw new ProtocolException("unknown network command " + ordinal);
+        }
+        return COMMANDS[ordinal];
+    }
+}

@@ -1,0 +1,92 @@
+package org.fdnet.event.wire;
+
+import java.nio.BufferUnderflowException;
+import java.nio.ByteBuffer;
+import java.nio.charset.StandardCharsets;
+
+/**
+ * One received frame: its type and a cursor over its payload. Every read checks the payload's bounds and
+ * throws a {@link ProtocolException} naming what was missing, so a malformed frame never escapes as a
+ * runtime exception.
+ */
+public final class Frame {
+    private final MessageType type;
+    private final ByteBuffer payload;
+
+    public Frame(MessageType type, ByteBuffer payload) {
+        this.type = type;
+        this.payload = payload;
+    }
+
+    public MessageType type() {
+        return type;
+    }
+
+    public int remaining() {
+        return payload.remaining();
+    }
+
+    public int getByte() throws ProtocolException {
+        try {
+            return payload.get() & 0xFF;
+        } catch (BufferUnderflowException e) {
+            throw malformed("u8");
+        }
+    }
+
+    public int getShort() throws ProtocolException {
+        try {
+            return payload.getShort() & 0xFFFF;
+        } catch (BufferUnderflowException e) {
+            throw malformed("u16");
+        }
+    }
+
+    public int getInt() throws ProtocolException {
+        try {
+            return payload.getInt();
+        } catch (BufferUnderflowException e) {
+            throw malformed("i32");
+        }
+    }
+
+    public long getLong() throws ProtocolException {
+        try {
+            return payload.getLong();
+        } catch (BufferUnderflowException e) {
+            throw malformed("i64");
+        }
+    }
+
+    /** A count that must be non-negative and able to fit the rest of the payload at minBytesEach. */
+    public int getCount(int minBytesEach) throws ProtocolException {
+        int n = getInt();
+        if (n < 0 || (long) n * minBytesEach > payload.remaining()) {
+            throw new ProtocolException("malformed " + type + " frame: count " + n
+                    + " does not fit the " + payload.remaining() + " bytes left");
+        }
+        return n;
+    }
+
+    public String getString() throws ProtocolException {
+        int n = getInt();
+        if (n < 0 || n > payload.remaining()) {
+            throw new ProtocolException("malformed " + type + " frame: string of " + n
+                    + " bytes with " + payload.remaining() + " bytes left");
+        }
+        String s = new String(payload.array(), payload.arrayOffset() + payload.position(), n, StandardCharsets.UTF_8);
+        payload.position(payload.position() + n);
+        return s;
+    }
+
+    /** Fails if bytes are left over: a frame must be exactly as long as its content. */
+    public void expectEnd() throws ProtocolException {
+        if (payload.hasRemaining()) {
+            throw new ProtocolException("malformed " + type + " frame: " + payload.remaining() + " unexpected trailing bytes");
+        }
+    }
+
+    private ProtocolException malformed(String what) {
+        return new ProtocolException("malformed " + type + " frame: truncated before a " + what);
+    }
+}

@@ -1,0 +1,13 @@
+/**
+ * The logger protocol: versioned, length-prefixed binary frames shared by the core's logger client, the
+ * logger and the viewers (specified in {@code docs/protocol.md}).
+ *
+ * <pre>
+ *   NetworkEvent ──EventCodec──▶ FrameWriter ──u32 length · u8 type · payload──▶ socket
+ *   socket ──FrameReader (length ≤ max, whole frame or "truncated")──▶ Frame ──EventCodec──▶ NetworkEvent
+ * </pre>
+ *
+ * Every read is bounds-checked and fails with a {@link org.fdnet.event.wire.ProtocolException} that names
+ * what was wrong; servers log it and close that one connection.
+ */
+package org.fdnet.event.wire;

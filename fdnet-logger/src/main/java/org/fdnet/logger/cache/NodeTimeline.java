@@ -1,0 +1,109 @@
+package org.fdnet.logger.cache;
+
+import java.util.Arrays;
+import java.util.List;
+
+/**
+ * The events of one node, sorted by time: the second level of the thesis's index (node id, then time).
+ * Appending in time order (the normal case: a source's times strictly increase) is O(1); a late event is
+ * inserted in place. Old events leave from the head. Not thread-safe: guarded by the cache's lock.
+ */
+final class NodeTimeline {
+    private CachedEvent[] items = new CachedEvent[8];
+    private int head;
+    private int tail;
+    /** The newest time that ever left this timeline: below it, the database must be asked. */
+    private long evictedUpTo = Long.MIN_VALUE;
+
+    int size() {
+        return tail - head;
+    }
+
+    boolean isEmpty() {
+        return tail == head;
+    }
+
+    long evictedUpTo() {
+        return evictedUpTo;
+    }
+
+    CachedEvent first() {
+        return items[head];
+    }
+
+    void add(CachedEvent e) {
+        if (tail == items.length) {
+            makeRoom();
+        }
+        if (tail == head || items[tail - 1].time() <= e.time()) {
+            items[tail++] = e;
+            return;
+        }
+        int at = lowerBound(e.time());
+        System.arraycopy(items, at, items, at + 1, tail - at);
+        items[at] = e;
+        tail++;
+    }
+
+    /** Removes one event (by identity), wherever it is: for the monitored index. */
+    boolean remove(CachedEvent e) {
+        for (int i = head; i < tail; i++) {
+            if (items[i] == e) {
+                System.arraycopy(items, i + 1, items, i, tail - i - 1);
+                items[--tail] = null;
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Pops evictable events from the head; returns the bytes freed. */
+    long evictHead() {
+        long freed = 0;
+        while (head < tail && items[head].evictable()) {
+            CachedEvent e = items[head];
+            evictedUpTo = Math.max(evictedUpTo, e.time());
+            freed += e.bytes();
+            items[head++] = null;
+        }
+        if (head == tail) {
+            head = 0;
+            tail = 0;
+        }
+        return freed;
+    }
+
+    void range(long from, long to, List<CachedEvent> out) {
+        for (int i = lowerBound(from); i < tail && items[i].time() <= to; i++) {
+            out.add(items[i]);
+        }
+    }
+
+    private int lowerBound(long time) {
+        int lo = head;
+        int hi = tail;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (items[mid].time() < time) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo;
+    }
+
+    private void makeRoom() {
+        int size = tail - head;
+        if (head > 0 && size <= items.length / 2) {
+            System.arraycopy(items, head, items, 0, size);
+            Arrays.fill(items, size, tail, null);
+        } else {
+            CachedEvent[] bigger = new CachedEvent[items.length * 2];
+            System.arraycopy(items, head, bigger, 0, size);
+            items = bigger;
+        }
+        head = 0;
+        tail = size;
+    }
+}

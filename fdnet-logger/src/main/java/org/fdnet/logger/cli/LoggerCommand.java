@@ -1,0 +1,115 @@
+package org.fdnet.logger.cli;
+
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import org.fdnet.logger.LoggerStatus;
+import org.fdnet.logger.NetworkStateLogger;
+import org.fdnet.logger.config.LoggerConfig;
+import org.fdnet.logger.config.LoggerConfigFile;
+import org.fdnet.logger.config.LoggerSetting;
+import org.fdnet.logger.ui.LoggerFrame;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code fdnet logger}: starts the network state logger (embedded PostgreSQL unless {@code --db}) and
+ * prints a status line every few seconds; {@code --gui} opens the configuration panel instead.
+ */
+@Command(name = "logger", mixinStandardHelpOptions = true,
+        description = "Start the network state logger: cores connect to the receiver port, viewers to the sender port.")
+public final class LoggerCommand implements Callable<Integer> {
+    @Option(names = "--db", paramLabel = "URL", description = "external database jdbc:postgresql://HOST:PORT/DB "
+            + "(default: embedded PostgreSQL in ~/.fdnet/logger-db)")
+    String db;
+
+    @Option(names = "--db-user", paramLabel = "USER", description = "user for --db (default postgres)")
+    String dbUser;
+
+    @Option(names = "--receiver-port", paramLabel = "P", description = "port for cores (default 5555)")
+    Integer receiverPort;
+
+    @Option(names = "--sender-port", paramLabel = "P", description = "port for viewers (default 5556)")
+    Integer senderPort;
+
+    @Option(names = "--config", paramLabel = "FILE", description = "configuration file (default ~/.fdnet/logger.properties)")
+    Path configFile;
+
+    @Option(names = "--gui", description = "open the configuration panel (Start/Stop, live status)")
+    boolean gui;
+
+    @Option(names = "--status-every", paramLabel = "SECONDS", defaultValue = "5",
+            description = "headless status line interval (default 5)")
+    int statusSeconds;
+
+    @Option(names = "--screenshot", paramLabel = "PNG", hidden = true,
+            description = "render the configuration panel to a PNG and exit (for the docs)")
+    Path screenshot;
+
+    @Override
+    public Integer call() throws Exception {
+        Path file = configFile != null ? configFile : LoggerConfigFile.defaultPath();
+        LoggerConfig config;
+        try {
+            config = LoggerConfigFile.load(file);
+            if (db != null) {
+                config.set(LoggerSetting.DATABASE_URL, db).set(LoggerSetting.DATABASE_EMBEDDED, "false");
+            }
+            if (dbUser != null) {
+                config.set(LoggerSetting.DATABASE_USER, dbUser);
+            }
+            if (receiverPort != null) {
+                config.set(LoggerSetting.RECEIVER_PORT, receiverPort.toString());
+            }
+            if (senderPort != null) {
+                config.set(LoggerSetting.SENDER_PORT, senderPort.toString());
+            }
+            config.validate();
+        } catch (IllegalArgumentException e) {
+            System.err.println("fdnet logger: " + e.getMessage());
+            return 2;
+        }
+        if (screenshot != null) {
+            LoggerFrame.screenshot(config, file, screenshot);
+            System.out.println("wrote " + screenshot);
+            return 0;
+        }
+        if (gui) {
+            LoggerFrame.open(config, file);
+            new CountDownLatch(1).await();
+            return 0;
+        }
+        return headless(config);
+    }
+
+    private int headless(LoggerConfig config) throws Exception {
+        NetworkStateLogger logger = new NetworkStateLogger(config);
+        try {
+            logger.start();
+        } catch (Exception e) {
+            System.err.println("fdnet logger: cannot start: " + e.getMessage());
+            return 1;
+        }
+        // Ctrl-C / TERM stop the logger *before* the JVM's shutdown hooks run: the embedded PostgreSQL library
+        // stops its server from a hook of its own, which would race the writer's final drain.
+        for (String name : new String[] {"INT", "TERM"}) {
+            sun.misc.Signal.handle(new sun.misc.Signal(name), signal -> new Thread(() -> {
+                System.out.println("fdnet logger: stopping (writing what the cache holds) ...");
+                logger.stop();
+                System.exit(0);
+            }, "fdnet-logger-stop").start());
+        }
+        System.out.printf("fdnet logger: cores -> 127.0.0.1:%d, viewers -> 127.0.0.1:%d (Ctrl-C stops)%n",
+                logger.receiverPort(), logger.senderPort());
+        System.out.flush();
+        while (logger.running()) {
+            Thread.sleep(statusSeconds * 1000L);
+            LoggerStatus s = logger.status();
+            if (s.running()) {
+                System.out.println(s.line());
+                System.out.flush();
+            }
+        }
+        return 0;
+    }
+}

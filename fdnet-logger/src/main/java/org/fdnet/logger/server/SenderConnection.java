@@ -1,0 +1,144 @@
+package org.fdnet.logger.server;
+
+import java.io.IOException;
+import java.net.Socket;
+import java.sql.SQLException;
+import java.util.List;
+import org.fdnet.event.NetworkEvent;
+import org.fdnet.event.wire.ErrorCode;
+import org.fdnet.event.wire.EventCodec;
+import org.fdnet.event.wire.Frame;
+import org.fdnet.event.wire.FrameReader;
+import org.fdnet.event.wire.Hello;
+import org.fdnet.event.wire.LoggedNode;
+import org.fdnet.event.wire.MessageType;
+import org.fdnet.event.wire.Protocol;
+import org.fdnet.event.wire.ProtocolException;
+import org.fdnet.logger.cache.CachedEvent;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * A viewer's connection to the sender server: LIST_NODES (names), HISTORY (cache and database merged, sent
+ * in chunks), MONITOR / UNMONITOR (live stream through a {@link MonitorStream}).
+ */
+final class SenderConnection extends Connection {
+    private static final Logger LOG = LoggerFactory.getLogger(SenderConnection.class);
+    private static final int MAX_NODES_PER_REQUEST = 10_000;
+
+    private final ViewerService viewers;
+    private MonitorStream monitor;
+
+    SenderConnection(Socket socket, int maxFrameBytes, ViewerService viewers) {
+        super(socket, maxFrameBytes);
+        this.viewers = viewers;
+    }
+
+    @Override
+    protected String describe() {
+        return super.describe(); // visible to MonitorStream (same package)
+    }
+
+    @Override
+    protected boolean handshake(Hello hello) throws IOException {
+        if (hello.role() != Protocol.ROLE_VIEWER) {
+            throw new ProtocolException("the sender server serves viewers; use the receiver port for cores");
+        }
+        send(w -> w.begin(MessageType.WELCOME).putShort(Protocol.VERSION).putLong(0));
+        return true;
+    }
+
+    @Override
+    protected void serve(FrameReader in) throws IOException {
+        Frame f;
+        while ((f = in.read()) != null) {
+            frames++;
+            switch (f.type()) {
+                case LIST_NODES -> listNodes(f.getInt(), f.getString());
+                case HISTORY -> {
+                    int id = f.getInt();
+                    int[] nodes = nodeIds(f);
+                    long from = f.getLong();
+                    long to = f.getLong();
+                    f.expectEnd();
+                    history(id, nodes, from, to);
+                }
+                case MONITOR -> {
+                    int[] nodes = nodeIds(f);
+                    f.expectEnd();
+                    monitor().monitor(nodes);
+                }
+                case UNMONITOR -> {
+                    int[] nodes = nodeIds(f);
+                    f.expectEnd();
+                    monitor().unmonitor(nodes);
+                }
+                default -> throw new ProtocolException("a viewer may not send " + f.type());
+            }
+        }
+    }
+
+    private MonitorStream monitor() {
+        if (monitor == null) {
+            monitor = new MonitorStream(this, viewers.cache());
+        }
+        return monitor;
+    }
+
+    private static int[] nodeIds(Frame f) throws ProtocolException {
+        int n = f.getCount(4);
+        if (n > MAX_NODES_PER_REQUEST) {
+            throw new ProtocolException("request names " + n + " nodes; at most " + MAX_NODES_PER_REQUEST);
+        }
+        int[] ids = new int[n];
+        for (int i = 0; i < n; i++) {
+            ids[i] = f.getInt();
+            if (ids[i] < 0) {
+                throw new ProtocolException("negative node id " + ids[i]);
+            }
+        }
+        return ids;
+    }
+
+    private void listNodes(int id, String filter) throws IOException {
+        List<LoggedNode> nodes = viewers.directory().nodes(filter);
+        send(w -> {
+            w.begin(MessageType.NODE_LIST).putInt(id).putInt(nodes.size());
+            nodes.forEach(n -> n.write(w));
+        });
+    }
+
+    private void history(int id, int[] nodes, long from, long to) throws IOException {
+        List<NetworkEvent> events;
+        try {
+            events = viewers.history(nodes, from, to);
+        } catch (SQLException e) {
+            LOG.warn("history for {} failed: {}", describe(), e.getMessage());
+            refuse(ErrorCode.INTERNAL, "database unavailable for history: " + e.getMessage());
+            throw new IOException("history failed", e);
+        }
+        for (int start = 0; start < events.size(); start += Protocol.MAX_EVENTS_PER_FRAME) {
+            List<NetworkEvent> chunk = events.subList(start, Math.min(events.size(), start + Protocol.MAX_EVENTS_PER_FRAME));
+            sendUnflushed(w -> {
+                w.begin(MessageType.HISTORY_CHUNK).putInt(id).putInt(chunk.size());
+                chunk.forEach(e -> EventCodec.write(w, e));
+            });
+        }
+        send(w -> w.begin(MessageType.HISTORY_END).putInt(id).putLong(events.size()));
+    }
+
+    /** Sends monitored events (from the stream's thread). */
+    void sendMonitored(List<CachedEvent> events) throws IOException {
+        send(w -> {
+            w.begin(MessageType.MONITOR_EVENTS).putInt(events.size());
+            events.forEach(e -> EventCodec.write(w, e.event()));
+        });
+    }
+
+    @Override
+    protected void closed() {
+        if (monitor != null) {
+            monitor.close();
+        }
+    }
+}

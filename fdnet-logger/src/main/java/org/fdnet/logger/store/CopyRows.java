@@ -1,0 +1,112 @@
+package org.fdnet.logger.store;
+
+import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
+
+/**
+ * Rows in PostgreSQL's COPY text format, built in one reusable byte buffer: tab between columns, newline
+ * after each row, and the four characters COPY treats specially (backslash, tab, newline, carriage return)
+ * escaped inside text values.
+ */
+final class CopyRows {
+    private byte[] buf = new byte[1 << 16];
+    private int len;
+    private boolean rowStarted;
+
+    void clear() {
+        len = 0;
+        rowStarted = false;
+    }
+
+    boolean isEmpty() {
+        return len == 0;
+    }
+
+    byte[] bytes() {
+        return buf;
+    }
+
+    int length() {
+        return len;
+    }
+
+    CopyRows number(long v) {
+        separator();
+        ensure(20);
+        if (v < 0) {
+            if (v == Long.MIN_VALUE) {
+                byte[] min = Long.toString(v).getBytes(StandardCharsets.US_ASCII);
+                System.arraycopy(min, 0, buf, len, min.length);
+                len += min.length;
+                return this;
+            }
+            buf[len++] = '-';
+            v = -v;
+        }
+        int start = len;
+        do {
+            buf[len++] = (byte) ('0' + (v % 10));
+            v /= 10;
+        } while (v != 0);
+        for (int i = start, j = len - 1; i < j; i++, j--) {
+            byte t = buf[i];
+            buf[i] = buf[j];
+            buf[j] = t;
+        }
+        return this;
+    }
+
+    CopyRows text(String v) {
+        separator();
+        int n = v.length();
+        ensure(n * 2);
+        for (int i = 0; i < n; i++) {
+            char c = v.charAt(i);
+            if (c >= 0x80) {
+                appendUtf8Slow(v.substring(i));
+                return this;
+            }
+            switch (c) {
+                case '\\' -> put2('\\', '\\');
+                case '\t' -> put2('\\', 't');
+                case '\n' -> put2('\\', 'n');
+                case '\r' -> put2('\\', 'r');
+                default -> buf[len++] = (byte) c;
+            }
+        }
+        return this;
+    }
+
+    void endRow() {
+        ensure(1);
+        buf[len++] = '\n';
+        rowStarted = false;
+    }
+
+    private void appendUtf8Slow(String rest) {
+        String escaped = rest.replace("\\", "\\\\").replace("\t", "\\t").replace("\n", "\\n").replace("\r", "\\r");
+        byte[] b = escaped.getBytes(StandardCharsets.UTF_8);
+        ensure(b.length);
+        System.arraycopy(b, 0, buf, len, b.length);
+        len += b.length;
+    }
+
+    private void put2(char a, char b) {
+        buf[len++] = (byte) a;
+        buf[len++] = (byte) b;
+    }
+
+    private void separator() {
+        if (rowStarted) {
+            ensure(1);
+            buf[len++] = '\t';
+        }
+        rowStarted = true;
+    }
+
+    private void ensure(int n) {
+        if (len + n > buf.length) {
+            buf = Arrays.copyOf(buf, Math.max(buf.length * 2, len + n));
+        }
+    }
+}

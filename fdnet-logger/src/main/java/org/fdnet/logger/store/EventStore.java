@@ -1,0 +1,365 @@
+package org.fdnet.logger.store;
+
+import java.sql.Array;
+import java.sql.Connection;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.sql.Statement;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.UUID;
+import org.fdnet.event.DataValueEvent;
+import org.fdnet.event.NetworkCommand;
+import org.fdnet.event.NetworkCommandEvent;
+import org.fdnet.event.NetworkEvent;
+import org.fdnet.event.NodeNamedEvent;
+import org.fdnet.event.RelationValueEvent;
+import org.fdnet.event.ValueType;
+import org.fdnet.event.wire.LoggedNode;
+import org.fdnet.logger.cache.CachedEvent;
+import org.fdnet.logger.cache.RunProgress;
+import org.fdnet.netinfo.NodeKind;
+import org.fdnet.netinfo.NodeRef;
+import org.postgresql.PGConnection;
+import org.postgresql.copy.CopyIn;
+import org.postgresql.copy.CopyManager;
+
+/**
+ * The logger's tables in PostgreSQL. {@link #writeBatch} is the writer's path: one transaction per batch,
+ * new node mappings and names first, then COPY of the values sorted by {@code (sourceid, time)} (the
+ * primary key's order: the B-tree is the bottleneck and sorted input halves its cost), then each run's
+ * committed sequence number. The other methods serve handshakes and viewers from a small pool.
+ */
+public final class EventStore implements AutoCloseable {
+    private static final Comparator<CachedEvent> KEY_ORDER =
+            Comparator.comparingInt(CachedEvent::sourceId).thenComparingLong(CachedEvent::time);
+
+    private final DatabaseTarget target;
+    private final ConnectionPool pool;
+    private final CopyRows rows = new CopyRows();
+
+    public EventStore(DatabaseTarget target) {
+        this.target = target;
+        this.pool = new ConnectionPool(target, 8);
+    }
+
+    public DatabaseTarget target() {
+        return target;
+    }
+
+    /** Creates the tables if they are missing. */
+    public void createSchema() throws SQLException {
+        try (Connection c = target.open()) {
+            Schema.create(c);
+        }
+    }
+
+    /** A connection for the writer (auto-commit off). */
+    public Connection openWriterConnection() throws SQLException {
+        Connection c = target.open();
+        c.setAutoCommit(false);
+        return c;
+    }
+
+    /**
+     * Writes one batch in one transaction on the writer's connection. On failure the transaction is rolled
+     * back (if the connection still answers) and the exception is rethrown: nothing of the batch is stored.
+     */
+    public void writeBatch(Connection c, List<CachedEvent> batch, List<NodeMapping> mappings) throws SQLException {
+        List<CachedEvent> data = new ArrayList<>();
+        List<CachedEvent> relations = new ArrayList<>();
+        List<CachedEvent> commands = new ArrayList<>();
+        List<CachedEvent> names = new ArrayList<>();
+        Map<RunProgress, Long> lastSeq = new HashMap<>();
+        for (CachedEvent e : batch) {
+            NetworkEvent ev = e.event();
+            if (ev instanceof DataValueEvent) {
+                data.add(e);
+            } else if (ev instanceof RelationValueEvent) {
+                relations.add(e);
+            } else if (ev instanceof NetworkCommandEvent) {
+                commands.add(e);
+            } else {
+                names.add(e);
+            }
+            lastSeq.merge(e.run(), e.seq(), Math::max);
+        }
+        try {
+            saveMappings(c, mappings);
+            saveNames(c, names);
+            CopyManager copy = c.unwrap(PGConnection.class).getCopyAPI();
+            sortByKey(data);
+            rows.clear();
+            for (CachedEvent e : data) {
+                DataValueEvent d = (DataValueEvent) e.event();
+                rows.number(d.sourceId()).number(d.time()).text(d.value()).number(d.type().code()).endRow();
+            }
+            copy(copy, "COPY datavalue_log (sourceid, time, value, typevalue) FROM STDIN");
+            sortByKey(relations);
+            rows.clear();
+            for (CachedEvent e : relations) {
+                RelationValueEvent r = (RelationValueEvent) e.event();
+                rows.number(r.sourceId()).number(r.time()).text(r.value()).endRow();
+            }
+            copy(copy, "COPY procvalue_log (sourceid, time, value) FROM STDIN");
+            rows.clear();
+            for (CachedEvent e : commands) {
+                NetworkCommandEvent n = (NetworkCommandEvent) e.event();
+                rows.number(n.sourceId()).text(n.sourceType()).text(n.command().text()).text(n.paramsId())
+                        .text(n.paramsType()).number(n.time()).endRow();
+            }
+            copy(copy, "COPY netcommand_log (sourceid, sourcetype, command, params_id, params_type, time) FROM STDIN");
+            // The watermarks and the COMMIT go in one round trip: the statements are integers only.
+            StringBuilder sql = new StringBuilder();
+            for (Map.Entry<RunProgress, Long> r : lastSeq.entrySet()) {
+                sql.append("UPDATE fdnet_run SET committed_seq = ").append(r.getValue()).append(" WHERE run_id = ")
+                        .append(r.getKey().runId()).append(" AND committed_seq < ").append(r.getValue()).append("; ");
+            }
+            sql.append("COMMIT");
+            try (Statement st = c.createStatement()) {
+                st.execute(sql.toString());
+            }
+            c.commit(); // a no-op when the COMMIT above ended the transaction; commits otherwise
+        } catch (SQLException | RuntimeException e) {
+            rollbackQuietly(c, e);
+            throw e;
+        }
+        for (Map.Entry<RunProgress, Long> r : lastSeq.entrySet()) {
+            r.getKey().committed(r.getValue());
+        }
+    }
+
+    /**
+     * Sorts by (sourceid, time). A source's events arrive in time order, so a stable sort by source alone
+     * (primitive keys: source id, then arrival index) is the key order; a late event (out of time order
+     * within its source) makes it fall back to the full comparison.
+     */
+    static void sortByKey(List<CachedEvent> events) {
+        int n = events.size();
+        long[] keys = new long[n];
+        for (int i = 0; i < n; i++) {
+            keys[i] = (long) events.get(i).sourceId() << 32 | i;
+        }
+        java.util.Arrays.sort(keys);
+        CachedEvent[] sorted = new CachedEvent[n];
+        for (int i = 0; i < n; i++) {
+            sorted[i] = events.get((int) keys[i]);
+            if (i > 0 && sorted[i].sourceId() == sorted[i - 1].sourceId() && sorted[i].time() < sorted[i - 1].time()) {
+                events.sort(KEY_ORDER);
+                return;
+            }
+        }
+        for (int i = 0; i < n; i++) {
+            events.set(i, sorted[i]);
+        }
+    }
+
+    /**
+     * After a failure whose outcome is unknown (the connection died around the COMMIT): was the batch
+     * committed? Its runs' watermarks were updated in the same transaction, so the database knows.
+     */
+    public boolean wasCommitted(List<CachedEvent> batch) throws SQLException {
+        Map<RunProgress, Long> lastSeq = new HashMap<>();
+        for (CachedEvent e : batch) {
+            lastSeq.merge(e.run(), e.seq(), Math::max);
+        }
+        for (Map.Entry<RunProgress, Long> r : lastSeq.entrySet()) {
+            List<Long> stored = query("SELECT committed_seq FROM fdnet_run WHERE run_id = " + r.getKey().runId(),
+                    rs -> rs.getLong(1));
+            if (stored.isEmpty() || stored.get(0) < r.getValue()) {
+                return false;
+            }
+        }
+        for (Map.Entry<RunProgress, Long> r : lastSeq.entrySet()) {
+            r.getKey().committed(r.getValue());
+        }
+        return true;
+    }
+
+    private void copy(CopyManager copy, String sql) throws SQLException {
+        if (rows.isEmpty()) {
+            return;
+        }
+        CopyIn in = copy.copyIn(sql);
+        try {
+            in.writeToCopy(rows.bytes(), 0, rows.length());
+            in.endCopy();
+        } finally {
+            if (in.isActive()) {
+                in.cancelCopy();
+            }
+        }
+    }
+
+    private static void saveMappings(Connection c, List<NodeMapping> mappings) throws SQLException {
+        if (mappings.isEmpty()) {
+            return;
+        }
+        try (PreparedStatement ps = c.prepareStatement("INSERT INTO fdnet_node (sourceid, run_id, local_id)"
+                + " VALUES (?, ?, ?) ON CONFLICT (sourceid) DO NOTHING")) {
+            for (NodeMapping m : mappings) {
+                ps.setInt(1, m.sourceId());
+                ps.setInt(2, m.runId());
+                ps.setInt(3, m.localId());
+                ps.addBatch();
+            }
+            ps.executeBatch();
+        }
+    }
+
+    private static void saveNames(Connection c, List<CachedEvent> names) throws SQLException {
+        if (names.isEmpty()) {
+            return;
+        }
+        try (PreparedStatement ps = c.prepareStatement(
+                "UPDATE fdnet_node SET kind = ?, module = ?, node = ?, named_at = ? WHERE sourceid = ?")) {
+            for (CachedEvent e : names) {
+                NodeNamedEvent n = (NodeNamedEvent) e.event();
+                ps.setString(1, n.kind() == NodeKind.DATA ? "data" : "proc");
+                ps.setString(2, n.name().module());
+                ps.setString(3, n.name().node());
+                ps.setLong(4, n.time());
+                ps.setInt(5, n.sourceId());
+                ps.addBatch();
+            }
+            ps.executeBatch();
+        }
+    }
+
+    private static void rollbackQuietly(Connection c, Exception cause) {
+        try {
+            c.rollback();
+        } catch (SQLException e) {
+            cause.addSuppressed(e);
+        }
+    }
+
+    /** A run row. */
+    public record RunRow(int runId, long committedSeq) {
+    }
+
+    public RunRow openRun(UUID uuid, String coreName) throws SQLException {
+        Connection c = pool.borrow();
+        boolean broken = true;
+        try (PreparedStatement ins = c.prepareStatement("INSERT INTO fdnet_run (run_uuid, core_name) VALUES (?, ?)"
+                + " ON CONFLICT (run_uuid) DO NOTHING");
+             PreparedStatement sel = c.prepareStatement("SELECT run_id, committed_seq FROM fdnet_run WHERE run_uuid = ?")) {
+            ins.setObject(1, uuid);
+            ins.setString(2, coreName);
+            ins.executeUpdate();
+            sel.setObject(1, uuid);
+            try (ResultSet rs = sel.executeQuery()) {
+                rs.next();
+                RunRow row = new RunRow(rs.getInt(1), rs.getLong(2));
+                broken = false;
+                return row;
+            }
+        } finally {
+            pool.giveBack(c, broken);
+        }
+    }
+
+    public List<NodeMapping> loadMappings(int runId) throws SQLException {
+        return query("SELECT sourceid, run_id, local_id FROM fdnet_node WHERE run_id = " + runId,
+                rs -> new NodeMapping(rs.getInt(1), rs.getInt(2), rs.getInt(3)));
+    }
+
+    public List<LoggedNode> loadNodes() throws SQLException {
+        return query("SELECT sourceid, run_id, kind, module, node FROM fdnet_node WHERE node IS NOT NULL",
+                rs -> new LoggedNode(rs.getInt(1), rs.getInt(2), SourceDirectory.kindOf(rs.getString(3)),
+                        new NodeRef(rs.getString(4), rs.getString(5))));
+    }
+
+    /** The first id of a fresh block of {@link Schema#SOURCE_BLOCK} global source ids. */
+    public int reserveSourceBlock() throws SQLException {
+        return query("SELECT nextval('fdnet_sourceid_block')", rs -> (int) rs.getLong(1)).get(0);
+    }
+
+    /** Every stored event of the nodes with {@code from <= time <= to}, in time order. */
+    public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws SQLException {
+        Connection c = pool.borrow();
+        boolean broken = true;
+        try {
+            List<NetworkEvent> out = new ArrayList<>();
+            Array ids = c.createArrayOf("integer", box(sourceIds));
+            try (PreparedStatement ps = c.prepareStatement("SELECT sourceid, time, value, typevalue FROM datavalue_log"
+                    + " WHERE sourceid = ANY (?) AND time BETWEEN ? AND ?")) {
+                bind(ps, ids, from, to);
+                try (ResultSet rs = ps.executeQuery()) {
+                    while (rs.next()) {
+                        out.add(new DataValueEvent(rs.getInt(1), rs.getLong(2), ValueType.fromCode(rs.getInt(4)),
+                                rs.getString(3)));
+                    }
+                }
+            }
+            try (PreparedStatement ps = c.prepareStatement("SELECT sourceid, time, value FROM procvalue_log"
+                    + " WHERE sourceid = ANY (?) AND time BETWEEN ? AND ?")) {
+                bind(ps, ids, from, to);
+                try (ResultSet rs = ps.executeQuery()) {
+                    while (rs.next()) {
+                        out.add(new RelationValueEvent(rs.getInt(1), rs.getLong(2), rs.getString(3)));
+                    }
+                }
+            }
+            try (PreparedStatement ps = c.prepareStatement("SELECT sourceid, time, sourcetype, command, params_id,"
+                    + " params_type FROM netcommand_log WHERE sourceid = ANY (?) AND time BETWEEN ? AND ?")) {
+                bind(ps, ids, from, to);
+                try (ResultSet rs = ps.executeQuery()) {
+                    while (rs.next()) {
+                        out.add(new NetworkCommandEvent(rs.getInt(1), rs.getLong(2), rs.getString(3),
+                                NetworkCommand.valueOf(rs.getString(4).toUpperCase(Locale.ROOT)), rs.getString(5),
+                                rs.getString(6)));
+                    }
+                }
+            }
+            out.sort(Comparator.comparingLong(NetworkEvent::time).thenComparingInt(NetworkEvent::sourceId));
+            broken = false;
+            return out;
+        } finally {
+            pool.giveBack(c, broken);
+        }
+    }
+
+    private static void bind(PreparedStatement ps, Array ids, long from, long to) throws SQLException {
+        ps.setArray(1, ids);
+        ps.setLong(2, from);
+        ps.setLong(3, to);
+    }
+
+    private static Integer[] box(int[] ids) {
+        Integer[] boxed = new Integer[ids.length];
+        for (int i = 0; i < ids.length; i++) {
+            boxed[i] = ids[i];
+        }
+        return boxed;
+    }
+
+    private interface RowMapper<T> {
+        T map(ResultSet rs) throws SQLException;
+    }
+
+    private <T> List<T> query(String sql, RowMapper<T> mapper) throws SQLException {
+        Connection c = pool.borrow();
+        boolean broken = true;
+        try (Statement s = c.createStatement(); ResultSet rs = s.executeQuery(sql)) {
+            List<T> out = new ArrayList<>();
+            while (rs.next()) {
+                out.add(mapper.map(rs));
+            }
+            broken = false;
+            return out;
+        } finally {
+            pool.giveBack(c, broken);
+        }
+    }
+
+    @Override
+    public void close() {
+        pool.close();
+    }
+}

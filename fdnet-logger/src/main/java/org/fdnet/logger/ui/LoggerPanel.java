@@ -1,0 +1,214 @@
+package org.fdnet.logger.ui;
+
+import java.awt.BorderLayout;
+import java.awt.FlowLayout;
+import java.awt.GridLayout;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.JTabbedPane;
+import javax.swing.JTable;
+import javax.swing.SwingWorker;
+import javax.swing.Timer;
+import org.fdnet.logger.LoggerStatus;
+import org.fdnet.logger.NetworkStateLogger;
+import org.fdnet.logger.config.LoggerConfig;
+import org.fdnet.logger.config.LoggerConfigFile;
+import org.fdnet.logger.config.LoggerSetting;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The logger's configuration panel (thesis, chapter 4 VIII): one tab per panel of parameters — database,
+ * writer, receiver (with its clients), sender (with its clients), memory and priority — Start and Stop,
+ * and the live status: cache used/free, events per second in and out, database state and lag.
+ * Start validates every field (the first bad one is shown with its precise message), saves the file the
+ * panel was opened with, seals the configuration and starts the logger off the event thread.
+ *
+ * <p>Component names (for tests): {@code start}, {@code stop}, {@code status}, {@code message}, and each
+ * field is named by its setting's key.
+ */
+public final class LoggerPanel extends JPanel {
+    private static final Logger LOG = LoggerFactory.getLogger(LoggerPanel.class);
+
+    private final Path file;
+    private final List<SettingsTab> tabs = new ArrayList<>();
+    private final ClientTableModel cores = new ClientTableModel();
+    private final ClientTableModel viewers = new ClientTableModel();
+    private final JButton start = new JButton("Start");
+    private final JButton stop = new JButton("Stop");
+    private final JLabel cacheLabel = new JLabel("cache: -");
+    private final JLabel rateLabel = new JLabel("events/s: -");
+    private final JLabel databaseLabel = new JLabel("database: -");
+    private final JLabel status = new JLabel("stopped");
+    private final JLabel message = new JLabel(" ");
+    private final Timer refresh;
+    private LoggerConfig config;
+    private volatile NetworkStateLogger logger;
+
+    public LoggerPanel(LoggerConfig config, Path file) {
+        super(new BorderLayout(6, 6));
+        this.config = config;
+        this.file = file;
+        JTabbedPane pane = new JTabbedPane();
+        pane.setName("tabs");
+        for (LoggerSetting.Panel p : LoggerSetting.Panel.values()) {
+            SettingsTab tab = new SettingsTab(p, config);
+            tabs.add(tab);
+            if (p == LoggerSetting.Panel.RECEIVER || p == LoggerSetting.Panel.SENDER) {
+                JPanel withClients = new JPanel(new BorderLayout());
+                withClients.add(tab, BorderLayout.NORTH);
+                JTable table = new JTable(p == LoggerSetting.Panel.RECEIVER ? cores : viewers);
+                table.setName(p == LoggerSetting.Panel.RECEIVER ? "cores" : "viewers");
+                JScrollPane scroll = new JScrollPane(table);
+                scroll.setBorder(BorderFactory.createTitledBorder("Connected clients"));
+                withClients.add(scroll, BorderLayout.CENTER);
+                pane.addTab(p.title(), withClients);
+            } else {
+                pane.addTab(p.title(), tab);
+            }
+        }
+        add(pane, BorderLayout.CENTER);
+        add(southPanel(), BorderLayout.SOUTH);
+        start.setName("start");
+        stop.setName("stop");
+        status.setName("status");
+        cacheLabel.setName("cache");
+        rateLabel.setName("rates");
+        databaseLabel.setName("database");
+        message.setName("message");
+        stop.setEnabled(false);
+        start.addActionListener(e -> startLogger());
+        stop.addActionListener(e -> stopLogger());
+        refresh = new Timer(500, e -> showStatus());
+        refresh.start();
+    }
+
+    private JPanel southPanel() {
+        JPanel statusPanel = new JPanel(new GridLayout(0, 1));
+        statusPanel.setBorder(BorderFactory.createTitledBorder("Logger's real-time information"));
+        statusPanel.add(status);
+        statusPanel.add(cacheLabel);
+        statusPanel.add(rateLabel);
+        statusPanel.add(databaseLabel);
+        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.RIGHT));
+        buttons.add(message);
+        buttons.add(start);
+        buttons.add(stop);
+        JPanel south = new JPanel(new BorderLayout());
+        south.add(statusPanel, BorderLayout.CENTER);
+        south.add(buttons, BorderLayout.SOUTH);
+        return south;
+    }
+
+    public NetworkStateLogger logger() {
+        return logger;
+    }
+
+    private void startLogger() {
+        LoggerConfig next = new LoggerConfig();
+        try {
+            for (SettingsTab t : tabs) {
+                t.applyTo(next);
+            }
+            next.validate();
+        } catch (IllegalArgumentException e) {
+            message.setText(e.getMessage());
+            return;
+        }
+        try {
+            LoggerConfigFile.save(next, file);
+        } catch (IOException e) {
+            message.setText("cannot save " + file + ": " + e.getMessage());
+            return;
+        }
+        config = next;
+        start.setEnabled(false);
+        tabs.forEach(t -> t.setEditable(false));
+        message.setText("starting…");
+        NetworkStateLogger starting = new NetworkStateLogger(next);
+        new SwingWorker<Void, Void>() {
+            @Override
+            protected Void doInBackground() throws Exception {
+                starting.start();
+                return null;
+            }
+
+            @Override
+            protected void done() {
+                try {
+                    get();
+                    logger = starting;
+                    stop.setEnabled(true);
+                    message.setText("started");
+                } catch (Exception e) {
+                    Throwable cause = e.getCause() != null ? e.getCause() : e;
+                    LOG.error("logger did not start", cause);
+                    message.setText("cannot start: " + cause.getMessage());
+                    start.setEnabled(true);
+                    tabs.forEach(t -> t.setEditable(true));
+                }
+            }
+        }.execute();
+    }
+
+    private void stopLogger() {
+        NetworkStateLogger running = logger;
+        if (running == null) {
+            return;
+        }
+        stop.setEnabled(false);
+        message.setText("stopping (writing what the cache holds)…");
+        new SwingWorker<Void, Void>() {
+            @Override
+            protected Void doInBackground() {
+                running.stop();
+                return null;
+            }
+
+            @Override
+            protected void done() {
+                logger = null;
+                start.setEnabled(true);
+                tabs.forEach(t -> t.setEditable(true));
+                message.setText("stopped");
+            }
+        }.execute();
+    }
+
+    private void showStatus() {
+        NetworkStateLogger l = logger;
+        LoggerStatus s = l == null ? null : l.status();
+        if (s == null || !s.running()) {
+            status.setText("stopped");
+            return;
+        }
+        status.setText(String.format("running — cores on %s:%d, viewers on %s:%d", config.receiverAddress(),
+                l.receiverPort(), config.senderAddress(), l.senderPort()));
+        cacheLabel.setText(String.format("cache: used %,d KiB, free %,d KiB (%.1f %%)%s, %,d events held, %,d monitored",
+                s.cache().usedBytes() >> 10, s.cache().freeBytes() >> 10, s.cache().usedPercent(),
+                s.cache().pressured() ? " — critical level: receivers paused" : "", s.cache().events(),
+                s.cache().monitored()));
+        rateLabel.setText(String.format("events/s: in %,.0f, out %,.0f (received %,d, committed %,d)",
+                s.eventsInPerSecond(), s.eventsOutPerSecond(), s.cache().received(), s.cache().committed()));
+        databaseLabel.setText(String.format("database: %s, lag %d ms (%,d unwritten)", s.database(),
+                s.cache().lagMillis(), s.cache().unwritten()));
+        cores.update(s.cores());
+        viewers.update(s.viewers());
+    }
+
+    /** Stops the refresh timer and the logger (window closing). */
+    public void dispose() {
+        refresh.stop();
+        NetworkStateLogger l = logger;
+        if (l != null) {
+            l.stop();
+        }
+    }
+}

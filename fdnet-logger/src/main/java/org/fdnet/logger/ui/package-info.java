@@ -1,0 +1,13 @@
+/**
+ * The logger's configuration panel (thesis, chapter 4 VIII), Swing with FlatLaf.
+ *
+ * <pre>
+ *   LoggerFrame ─▶ LoggerPanel ─┬─ SettingsTab × 5 (database, writer, receiver, sender, memory &amp; priority)
+ *                               ├─ ClientTableModel × 2 (address, port, name, state, frames, end reason)
+ *                               └─ Start/Stop ─SwingWorker─▶ NetworkStateLogger; Timer(500 ms) ─status()─▶ labels
+ * </pre>
+ *
+ * Component names tests use: {@code start}, {@code stop}, {@code status}, {@code message}, {@code cache},
+ * {@code rates}, {@code database}, {@code tabs}, {@code cores}, {@code viewers}, and each field by its setting's key.
+ */
+package org.fdnet.logger.ui;

@@ -1,0 +1,169 @@
+package org.fdnet.logger;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.fdnet.event.client.LoggerClient;
+import org.fdnet.event.client.LoggerClientSettings;
+import org.fdnet.logger.config.LoggerConfig;
+import org.fdnet.logger.config.LoggerSetting;
+import org.fdnet.logger.server.ConnectionState;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Real faults while a core keeps producing: nothing lost, nothing stored twice. */
+@Timeout(value = 180, unit = TimeUnit.SECONDS)
+class FaultToleranceTest {
+    @TempDir
+    static Path folder;
+    static PostgresFixture pg;
+
+    @BeforeAll
+    static void startDatabase() throws Exception {
+        pg = new PostgresFixture(folder);
+    }
+
+    @AfterAll
+    static void stopDatabase() throws Exception {
+        pg.close();
+    }
+
+    private static long storedEvents(int runId) throws Exception {
+        String ofRun = " WHERE sourceid IN (SELECT sourceid FROM fdnet_node WHERE run_id = " + runId + ")";
+        return pg.count("SELECT count(*) FROM datavalue_log" + ofRun) + pg.count("SELECT count(*) FROM procvalue_log" + ofRun)
+                + pg.count("SELECT count(*) FROM netcommand_log" + ofRun);
+    }
+
+    private static int runOf(LoggerClient client) throws Exception {
+        return (int) pg.count("SELECT run_id FROM fdnet_run WHERE run_uuid = '" + client.run() + "'");
+    }
+
+    @Test
+    void shouldStoreEveryEventExactlyOnceWhenTheDatabaseStopsMidStreamAndComesBack() throws Exception {
+        try (NetworkStateLogger logger = new NetworkStateLogger(pg.loggerConfig())) {
+            logger.start();
+            try (LoggerClient client = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(),
+                    "outage-core").withJournal(folder.resolve("j-outage"), 64 << 20))) {
+                Producer producer = new Producer(new TestEvents(8), client, 20);
+                Thread.sleep(1500);
+                pg.stopDatabase();
+                Thread.sleep(2500);
+                assertThat(logger.writer().databaseState()).startsWith("lost");
+                pg.startDatabase();
+                Thread.sleep(1000);
+                long produced = producer.stop();
+                assertThat(client.flush(90_000)).isTrue();
+                assertThat(client.lostEvents()).isZero();
+                assertThat(storedEvents(runOf(client))).isEqualTo(produced);
+                assertThat(logger.writer().databaseState()).isEqualTo("connected");
+            }
+        }
+    }
+
+    @Test
+    void shouldPushBackOnTheCoreWithinItsCapacityWhileTheDatabaseIsDownAndLoseNothing() throws Exception {
+        LoggerConfig config = pg.loggerConfig().set(LoggerSetting.MEMORY_CAPACITY_MB, "1");
+        long capacity = config.cacheCapacityBytes();
+        try (NetworkStateLogger logger = new NetworkStateLogger(config)) {
+            logger.start();
+            try (LoggerClient client = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(),
+                    "pressed-core").withMemoryEvents(5000).withJournal(folder.resolve("j-press"), 256 << 20))) {
+                Producer producer = new Producer(new TestEvents(8), client, 40);
+                waitForCommits(client, 1000);
+                pg.stopDatabase();
+                long maxUsed = 0;
+                boolean sawPressure = false;
+                boolean sawWaitingCore = false;
+                long deadline = System.currentTimeMillis() + 4000;
+                while (System.currentTimeMillis() < deadline) {
+                    LoggerStatus s = logger.status();
+                    maxUsed = Math.max(maxUsed, s.cache().usedBytes());
+                    sawPressure |= s.cache().pressured();
+                    sawWaitingCore |= s.cores().stream().anyMatch(c -> c.state() == ConnectionState.WAITING);
+                    Thread.sleep(20);
+                }
+                assertThat(sawPressure).as("critical level reached").isTrue();
+                assertThat(sawWaitingCore).as("receiver stopped reading its core").isTrue();
+                assertThat(maxUsed).as("cache within its capacity").isLessThanOrEqualTo(capacity);
+                assertThat(client.status().inJournal()).as("the core spilled to its journal, never blocked").isPositive();
+                pg.startDatabase();
+                long produced = producer.stop();
+                assertThat(client.flush(120_000)).isTrue();
+                assertThat(client.lostEvents()).isZero();
+                assertThat(storedEvents(runOf(client))).isEqualTo(produced);
+            }
+        }
+    }
+
+    @Test
+    void shouldStoreEveryEventExactlyOnceWhenTheLoggerProcessIsKilledAndRestarted() throws Exception {
+        int receiver = freePort();
+        int sender = freePort();
+        Process logger = startLoggerProcess(receiver, sender, "1");
+        try (LoggerClient client = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", receiver, "kill-core")
+                .withJournal(folder.resolve("j-kill"), 64 << 20))) {
+            Producer producer = new Producer(new TestEvents(6), client, 20);
+            waitForCommits(client, 2000);
+            logger.destroyForcibly().waitFor(10, TimeUnit.SECONDS); // SIGKILL: no drain, no goodbye
+            Thread.sleep(1500);
+            logger = startLoggerProcess(receiver, sender, "2");
+            Thread.sleep(2000);
+            long produced = producer.stop();
+            assertThat(client.flush(90_000)).isTrue();
+            assertThat(client.lostEvents()).isZero();
+            assertThat(storedEvents(runOf(client))).isEqualTo(produced);
+        } finally {
+            logger.destroy();
+            if (!logger.waitFor(30, TimeUnit.SECONDS)) {
+                logger.destroyForcibly();
+            }
+        }
+    }
+
+    private static void waitForCommits(LoggerClient client, long atLeast) throws InterruptedException {
+        long deadline = System.currentTimeMillis() + 30_000;
+        while (client.status().acked() < atLeast && System.currentTimeMillis() < deadline) {
+            Thread.sleep(20);
+        }
+        assertThat(client.status().acked()).isGreaterThanOrEqualTo(atLeast);
+    }
+
+    static int freePort() throws IOException {
+        try (ServerSocket s = new ServerSocket(0)) {
+            return s.getLocalPort();
+        }
+    }
+
+    private static Process startLoggerProcess(int receiver, int sender, String tag) throws Exception {
+        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), "org.fdnet.cli.FdnetCommand", "logger",
+                "--db", pg.target().url(), "--receiver-port", Integer.toString(receiver),
+                "--sender-port", Integer.toString(sender), "--config", folder.resolve("none.properties").toString(),
+                "--status-every", "1"));
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true)
+                .redirectOutput(folder.resolve("logger-" + tag + ".log").toFile()).start();
+        long deadline = System.currentTimeMillis() + 30_000;
+        while (System.currentTimeMillis() < deadline) {
+            try (Socket s = new Socket("127.0.0.1", receiver)) {
+                return p;
+            } catch (IOException e) {
+                if (!p.isAlive()) {
+                    throw new IllegalStateException("logger process exited: "
+                            + java.nio.file.Files.readString(folder.resolve("logger-" + tag + ".log")));
+                }
+                Thread.sleep(100);
+            }
+        }
+        p.destroyForcibly();
+        throw new IllegalStateException("logger process did not listen on " + receiver);
+    }
+}

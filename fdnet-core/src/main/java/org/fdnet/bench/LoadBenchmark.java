@@ -33,8 +33,8 @@ import picocli.CommandLine.Model.CommandSpec;
  * reading the bytes costs at all), and a breadth-first search over plain int arrays of the same graph.
  */
 @Command(name = "load", mixinStandardHelpOptions = true,
-        description = {"Generate a network, then time load + validate and the descendants of a root node,",
-            "each beside a same-run baseline (bare SAX parse; BFS over int arrays).",
+        description = {"Load + validate a generated network and query descendants, beside same-run baselines.",
+            "Baselines: a bare SAX parse of the same file; a BFS over int arrays of the same graph.",
             "Targets for 10,000 nodes / 20,000 connections: load + validate <= 1 s, descendants <= 10 ms."})
 public final class LoadBenchmark implements Callable<Integer> {
     @Option(names = "--nodes", defaultValue = "10000", description = "nodes to generate (default ${DEFAULT-VALUE})")

@@ -13,32 +13,22 @@ import java.util.concurrent.atomic.AtomicInteger;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.event.client.ViewerClient;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 @Timeout(value = 120, unit = TimeUnit.SECONDS)
 class ConcurrentViewersTest {
     @TempDir
     static Path folder;
-    static PostgresFixture pg;
-
-    @BeforeAll
-    static void startDatabase() throws Exception {
-        pg = new PostgresFixture(folder);
-    }
-
-    @AfterAll
-    static void stopDatabase() throws Exception {
-        pg.close();
-    }
+    @RegisterExtension
+    static final PostgresPerClass database = new PostgresPerClass();
 
     @Test
     void shouldServeAHundredConcurrentViewersTheSameCompleteHistoryWhileACoreProduces() throws Exception {
         ExecutorService pool = Executors.newFixedThreadPool(100);
-        try (NetworkStateLogger logger = new NetworkStateLogger(pg.loggerConfig())) {
+        try (NetworkStateLogger logger = new NetworkStateLogger(database.fixture().loggerConfig())) {
             logger.start();
             try (LoggerClient core = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(),
                     "viewed-core").withJournal(folder.resolve("j"), 16 << 20))) {

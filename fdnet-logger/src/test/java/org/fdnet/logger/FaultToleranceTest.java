@@ -14,10 +14,9 @@ import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.logger.config.LoggerConfig;
 import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.logger.server.ConnectionState;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 /** Real faults while a core keeps producing: nothing lost, nothing stored twice. */
@@ -25,40 +24,31 @@ import org.junit.jupiter.api.io.TempDir;
 class FaultToleranceTest {
     @TempDir
     static Path folder;
-    static PostgresFixture pg;
-
-    @BeforeAll
-    static void startDatabase() throws Exception {
-        pg = new PostgresFixture(folder);
-    }
-
-    @AfterAll
-    static void stopDatabase() throws Exception {
-        pg.close();
-    }
+    @RegisterExtension
+    static final PostgresPerClass database = new PostgresPerClass();
 
     private static long storedEvents(int runId) throws Exception {
         String ofRun = " WHERE sourceid IN (SELECT sourceid FROM fdnet_node WHERE run_id = " + runId + ")";
-        return pg.count("SELECT count(*) FROM datavalue_log" + ofRun) + pg.count("SELECT count(*) FROM procvalue_log" + ofRun)
-                + pg.count("SELECT count(*) FROM netcommand_log" + ofRun);
+        return database.fixture().count("SELECT count(*) FROM datavalue_log" + ofRun) + database.fixture().count("SELECT count(*) FROM procvalue_log" + ofRun)
+                + database.fixture().count("SELECT count(*) FROM netcommand_log" + ofRun);
     }
 
     private static int runOf(LoggerClient client) throws Exception {
-        return (int) pg.count("SELECT run_id FROM fdnet_run WHERE run_uuid = '" + client.run() + "'");
+        return (int) database.fixture().count("SELECT run_id FROM fdnet_run WHERE run_uuid = '" + client.run() + "'");
     }
 
     @Test
     void shouldStoreEveryEventExactlyOnceWhenTheDatabaseStopsMidStreamAndComesBack() throws Exception {
-        try (NetworkStateLogger logger = new NetworkStateLogger(pg.loggerConfig())) {
+        try (NetworkStateLogger logger = new NetworkStateLogger(database.fixture().loggerConfig())) {
             logger.start();
             try (LoggerClient client = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(),
                     "outage-core").withJournal(folder.resolve("j-outage"), 64 << 20))) {
                 Producer producer = new Producer(new TestEvents(8), client, 20);
                 Thread.sleep(1500);
-                pg.stopDatabase();
+                database.fixture().stopDatabase();
                 Thread.sleep(2500);
                 assertThat(logger.writer().databaseState()).startsWith("lost");
-                pg.startDatabase();
+                database.fixture().startDatabase();
                 Thread.sleep(1000);
                 long produced = producer.stop();
                 assertThat(client.flush(90_000)).isTrue();
@@ -71,7 +61,7 @@ class FaultToleranceTest {
 
     @Test
     void shouldPushBackOnTheCoreWithinItsCapacityWhileTheDatabaseIsDownAndLoseNothing() throws Exception {
-        LoggerConfig config = pg.loggerConfig().set(LoggerSetting.MEMORY_CAPACITY_MB, "1");
+        LoggerConfig config = database.fixture().loggerConfig().set(LoggerSetting.MEMORY_CAPACITY_MB, "1");
         long capacity = config.cacheCapacityBytes();
         try (NetworkStateLogger logger = new NetworkStateLogger(config)) {
             logger.start();
@@ -79,7 +69,7 @@ class FaultToleranceTest {
                     "pressed-core").withMemoryEvents(5000).withJournal(folder.resolve("j-press"), 256 << 20))) {
                 Producer producer = new Producer(new TestEvents(8), client, 40);
                 waitForCommits(client, 1000);
-                pg.stopDatabase();
+                database.fixture().stopDatabase();
                 long maxUsed = 0;
                 boolean sawPressure = false;
                 boolean sawWaitingCore = false;
@@ -95,7 +85,7 @@ class FaultToleranceTest {
                 assertThat(sawWaitingCore).as("receiver stopped reading its core").isTrue();
                 assertThat(maxUsed).as("cache within its capacity").isLessThanOrEqualTo(capacity);
                 assertThat(client.status().inJournal()).as("the core spilled to its journal, never blocked").isPositive();
-                pg.startDatabase();
+                database.fixture().startDatabase();
                 long produced = producer.stop();
                 assertThat(client.flush(120_000)).isTrue();
                 assertThat(client.lostEvents()).isZero();
@@ -146,7 +136,7 @@ class FaultToleranceTest {
     private static Process startLoggerProcess(int receiver, int sender, String tag) throws Exception {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", System.getProperty("java.class.path"), "org.fdnet.cli.FdnetCommand", "logger",
-                "--db", pg.target().url(), "--receiver-port", Integer.toString(receiver),
+                "--db", database.fixture().target().url(), "--receiver-port", Integer.toString(receiver),
                 "--sender-port", Integer.toString(sender), "--config", folder.resolve("none.properties").toString(),
                 "--status-every", "1"));
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true)

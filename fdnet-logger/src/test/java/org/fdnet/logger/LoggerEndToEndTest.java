@@ -13,31 +13,21 @@ import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.event.client.ViewerClient;
 import org.fdnet.event.wire.LoggedNode;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 @Timeout(value = 120, unit = TimeUnit.SECONDS)
 class LoggerEndToEndTest {
     @TempDir
     static Path folder;
-    static PostgresFixture pg;
-
-    @BeforeAll
-    static void startDatabase() throws Exception {
-        pg = new PostgresFixture(folder);
-    }
-
-    @AfterAll
-    static void stopDatabase() throws Exception {
-        pg.close();
-    }
+    @RegisterExtension
+    static final PostgresPerClass database = new PostgresPerClass();
 
     @Test
     void shouldStoreEveryEventOfARunExactlyOnceAndNameItsNodes() throws Exception {
-        try (NetworkStateLogger logger = new NetworkStateLogger(pg.loggerConfig())) {
+        try (NetworkStateLogger logger = new NetworkStateLogger(database.fixture().loggerConfig())) {
             logger.start();
             TestEvents core = new TestEvents(5);
             try (LoggerClient client = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(),
@@ -49,19 +39,19 @@ class LoggerEndToEndTest {
                 assertThat(client.flush(60_000)).isTrue();
                 assertThat(client.lostEvents()).isZero();
             }
-            long rows = pg.count("SELECT count(*) FROM datavalue_log") + pg.count("SELECT count(*) FROM procvalue_log")
-                    + pg.count("SELECT count(*) FROM netcommand_log");
+            long rows = database.fixture().count("SELECT count(*) FROM datavalue_log") + database.fixture().count("SELECT count(*) FROM procvalue_log")
+                    + database.fixture().count("SELECT count(*) FROM netcommand_log");
             assertThat(rows).isEqualTo(20_000);
-            assertThat(pg.count("SELECT count(*) FROM fdnet_node WHERE module = 'arm'")).isEqualTo(6);
-            assertThat(pg.count("SELECT count(*) FROM datavalue_log WHERE value = E'line\\\\one\\nline two\u00e9'"))
+            assertThat(database.fixture().count("SELECT count(*) FROM fdnet_node WHERE module = 'arm'")).isEqualTo(6);
+            assertThat(database.fixture().count("SELECT count(*) FROM datavalue_log WHERE value = E'line\\\\one\\nline two\u00e9'"))
                     .isGreaterThan(0);
-            assertThat(pg.count("SELECT count(*) FROM fdnet_run")).isEqualTo(1);
+            assertThat(database.fixture().count("SELECT count(*) FROM fdnet_run")).isEqualTo(1);
         }
     }
 
     @Test
     void shouldAnswerHistoryInTimeOrderFromCacheAndDatabaseAndStreamMonitoredNodes() throws Exception {
-        try (NetworkStateLogger logger = new NetworkStateLogger(pg.loggerConfig())) {
+        try (NetworkStateLogger logger = new NetworkStateLogger(database.fixture().loggerConfig())) {
             logger.start();
             TestEvents core = new TestEvents(3);
             List<NetworkEvent> live = new CopyOnWriteArrayList<>();
@@ -95,7 +85,7 @@ class LoggerEndToEndTest {
                 }
                 assertThat(live).isNotEmpty().allMatch(e -> e.sourceId() == joint);
                 assertThat(history).containsAll(live);
-                long stored = pg.count("SELECT count(*) FROM datavalue_log WHERE sourceid = " + joint);
+                long stored = database.fixture().count("SELECT count(*) FROM datavalue_log WHERE sourceid = " + joint);
                 assertThat((long) values.size()).isEqualTo(stored);
             }
         }

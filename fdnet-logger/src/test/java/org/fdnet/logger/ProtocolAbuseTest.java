@@ -18,10 +18,9 @@ import org.fdnet.event.wire.Hello;
 import org.fdnet.event.wire.MessageType;
 import org.fdnet.logger.server.ClientInfo;
 import org.fdnet.logger.server.ConnectionState;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 /** Garbage, truncated and oversized frames close their own connection only; good clients never notice. */
@@ -29,21 +28,12 @@ import org.junit.jupiter.api.io.TempDir;
 class ProtocolAbuseTest {
     @TempDir
     static Path folder;
-    static PostgresFixture pg;
-
-    @BeforeAll
-    static void startDatabase() throws Exception {
-        pg = new PostgresFixture(folder);
-    }
-
-    @AfterAll
-    static void stopDatabase() throws Exception {
-        pg.close();
-    }
+    @RegisterExtension
+    static final PostgresPerClass database = new PostgresPerClass();
 
     @Test
     void shouldCloseOnlyTheOffendingConnectionsAndKeepEveryAcceptedEvent() throws Exception {
-        try (NetworkStateLogger logger = new NetworkStateLogger(pg.loggerConfig())) {
+        try (NetworkStateLogger logger = new NetworkStateLogger(database.fixture().loggerConfig())) {
             logger.start();
             int port = logger.receiverPort();
             try (LoggerClient good = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", port, "good-core")
@@ -81,8 +71,8 @@ class ProtocolAbuseTest {
                 long produced = producer.stop();
                 assertThat(good.flush(60_000)).isTrue();
                 assertThat(good.status().connected()).isTrue();
-                long stored = pg.count("SELECT count(*) FROM datavalue_log") + pg.count("SELECT count(*) FROM procvalue_log")
-                        + pg.count("SELECT count(*) FROM netcommand_log");
+                long stored = database.fixture().count("SELECT count(*) FROM datavalue_log") + database.fixture().count("SELECT count(*) FROM procvalue_log")
+                        + database.fixture().count("SELECT count(*) FROM netcommand_log");
                 assertThat(stored).isEqualTo(produced);
                 assertThat(logger.status().cores()).filteredOn(c -> c.state() == ConnectionState.STOPPED)
                         .hasSizeGreaterThanOrEqualTo(5).extracting(ClientInfo::endReason).allMatch(r -> !r.isEmpty());

@@ -2,33 +2,19 @@ package org.fdnet.logger;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.fdnet.testing.CliRun;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 /** {@code fdnet run … --logger}: every event the run reports is in PostgreSQL, kind by kind. */
 @Timeout(value = 120, unit = TimeUnit.SECONDS)
 class RunWithLoggerTest {
-    @TempDir
-    static Path folder;
-    static PostgresFixture pg;
-
-    @BeforeAll
-    static void startDatabase() throws Exception {
-        pg = new PostgresFixture(folder);
-    }
-
-    @AfterAll
-    static void stopDatabase() throws Exception {
-        pg.close();
-    }
+    @RegisterExtension
+    static final PostgresPerClass database = new PostgresPerClass();
 
     private static long reported(String out, String kind) {
         Matcher m = Pattern.compile(kind + "\\s+([\\d,]+)").matcher(out);
@@ -37,7 +23,7 @@ class RunWithLoggerTest {
 
     @Test
     void shouldRecordEveryEventOfARunInPostgresql() throws Exception {
-        try (NetworkStateLogger logger = new NetworkStateLogger(pg.loggerConfig())) {
+        try (NetworkStateLogger logger = new NetworkStateLogger(database.fixture().loggerConfig())) {
             logger.start();
             CliRun cli = new CliRun();
             int exit = cli.fdnet("run", "../networks/roq-motion.fdn", "--for", "2s", "--set", "Walk/I want to walk=0.5",
@@ -49,10 +35,10 @@ class RunWithLoggerTest {
             long total = Long.parseLong(run.group(1).replace(",", ""));
             String ofRun = " WHERE sourceid IN (SELECT n.sourceid FROM fdnet_node n JOIN fdnet_run r USING (run_id)"
                     + " WHERE r.run_uuid = '" + run.group(2) + "')";
-            long values = pg.count("SELECT count(*) FROM datavalue_log" + ofRun);
-            long statuses = pg.count("SELECT count(*) FROM procvalue_log" + ofRun);
-            long commands = pg.count("SELECT count(*) FROM netcommand_log" + ofRun);
-            long names = pg.count("SELECT count(*) FROM fdnet_node" + ofRun + " AND node IS NOT NULL");
+            long values = database.fixture().count("SELECT count(*) FROM datavalue_log" + ofRun);
+            long statuses = database.fixture().count("SELECT count(*) FROM procvalue_log" + ofRun);
+            long commands = database.fixture().count("SELECT count(*) FROM netcommand_log" + ofRun);
+            long names = database.fixture().count("SELECT count(*) FROM fdnet_node" + ofRun + " AND node IS NOT NULL");
             // The summary is printed while the network still runs; its closing adds a few events (Relations
             // stopping), which the client's own count ("all N events committed") includes.
             assertThat(values).isGreaterThanOrEqualTo(reported(out, "DataValueEvent")).isGreaterThan(100);

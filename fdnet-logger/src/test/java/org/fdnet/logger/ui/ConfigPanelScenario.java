@@ -45,8 +45,16 @@ public final class ConfigPanelScenario {
             System.out.println("STEP all passed");
             System.exit(0);
         } catch (Throwable t) {
+            // stdout is the test's evidence: the parent test prints it when a step fails
             System.out.println("FAILED: " + t);
-            t.printStackTrace(System.out);
+            for (Throwable c = t; c != null; c = c.getCause()) {
+                for (StackTraceElement e : c.getStackTrace()) {
+                    System.out.println("    at " + e);
+                }
+                if (c.getCause() != null) {
+                    System.out.println("caused by: " + c.getCause());
+                }
+            }
             System.exit(1);
         }
     }

@@ -26,6 +26,10 @@ import org.slf4j.LoggerFactory;
  * {@code retryMillis}, probes the peer with one batch; {@link #retarget} points it at a restarted peer.
  * After a (re)start only one batch is in flight until the peer has acknowledged one, so a fresh receiver
  * learns where the sequence stands before batches can overtake each other.
+ *
+ * <p>{@code offer} runs on the writer's thread under the engine's commit lock, so it only queues: a remote
+ * call there would block the whole engine. To keep a lone value from paying for a thread wake-up, one
+ * caller of an idle link watches for the next value for {@link LinkSettings#spinMicros()} before it parks.
  */
 public final class OutboundLink implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(OutboundLink.class);
@@ -61,6 +65,10 @@ public final class OutboundLink implements AutoCloseable {
     private boolean closed;
     private boolean writerWaiting;
     private int waitingCallers;
+    /** One idle caller is watching {@link #offered} instead of waiting on the lock: offer() need not notify. */
+    private boolean watching;
+    /** {@link #tailSeq} as the watching caller reads it without the lock. */
+    private volatile long offered;
     private long lost;
     private long nextProbeNanos;
     private long lastProgressNanos;
@@ -147,7 +155,8 @@ public final class OutboundLink implements AutoCloseable {
             originStreams[slot] = origin == null ? stream : origin.stream();
             originSeqs[slot] = origin == null ? tailSeq : origin.seq();
             tailSeq++;
-            if (waitingCallers > 0) {
+            offered = tailSeq;
+            if (waitingCallers > 0 && !watching) {
                 if (writerWaiting) {
                     lock.notifyAll();
                 } else {
@@ -203,52 +212,101 @@ public final class OutboundLink implements AutoCloseable {
 
     /** One of {@code window} caller threads: takes the next batch, calls the peer, acknowledges. */
     private void sendLoop() {
+        Batch batch;
+        while ((batch = nextBatch()) != null) {
+            call(batch);
+        }
+    }
+
+    /**
+     * Waits until a batch may go and takes it; {@code null} when the link closed. While the link is idle one
+     * caller <em>watches</em> for the next value instead of parking (see {@link #watchForOffer}): the values
+     * are offered under the engine's commit lock, so the writer cannot send them itself, and waking a parked
+     * thread would add its wake-up to every lone value's latency.
+     */
+    private Batch nextBatch() {
+        boolean watched = false;
         while (true) {
-            Object[] values;
-            long firstSeq;
-            long callGeneration;
-            ValueSink target;
-            String originStream;
-            long originFirstSeq;
+            long watchFrom;
             synchronized (lock) {
-                while (!closed && !readyToSend()) {
+                if (watched) {
+                    watching = false; // from here on offer() notifies again; readyToSend() is re-checked below
+                    watched = false;
+                }
+                if (closed) {
+                    return null;
+                }
+                if (readyToSend()) {
+                    Batch batch = takeBatch();
+                    if (waitingCallers > 0 && readyToSend()) {
+                        lock.notify(); // values offered during a watch were not announced: share them out
+                    }
+                    return batch;
+                }
+                if (watching || !idleWithRoom() || settings.spinMicros() == 0) {
                     waitingCallers++;
                     try {
                         lock.wait(broken ? settings.retryMillis() : 0);
                     } catch (InterruptedException e) {
-                        return;
+                        return null;
                     } finally {
                         waitingCallers--;
                     }
+                    continue;
                 }
-                if (closed) {
-                    return;
-                }
-                int max = (int) Math.min(tailSeq - sendSeq, settings.batchMax());
-                int first = (int) (sendSeq & mask);
-                originStream = originStreams[first];
-                originFirstSeq = originSeqs[first];
-                // One batch, one origin stream with consecutive numbers: cut where that changes.
-                int n = 1;
-                while (n < max) {
-                    int slot = (int) ((sendSeq + n) & mask);
-                    if (!originStreams[slot].equals(originStream) || originSeqs[slot] != originFirstSeq + n) {
-                        break;
-                    }
-                    n++;
-                }
-                values = new Object[n];
-                for (int i = 0; i < n; i++) {
-                    values[i] = ring[(int) ((sendSeq + i) & mask)];
-                }
-                firstSeq = sendSeq;
-                sendSeq += n;
-                inFlight++;
-                callGeneration = generation;
-                target = sink;
+                watching = true;
+                watched = true;
+                watchFrom = tailSeq;
             }
-            call(target, firstSeq, originStream, originFirstSeq, values, callGeneration);
+            watchForOffer(watchFrom);
         }
+    }
+
+    /** Nothing waits, nothing is wrong, and a value offered now could go at once. */
+    private boolean idleWithRoom() {
+        return sendSeq == tailSeq && !broken && inFlight < (probing ? 1 : settings.window());
+    }
+
+    /**
+     * Outside the lock: returns as soon as a value is offered after {@code watchFrom}, or after
+     * {@code spinMicros}. Yields on every turn, so on a busy machine the watch gives its core to whoever
+     * needs it rather than starving the threads that produce the next value.
+     */
+    private void watchForOffer(long watchFrom) {
+        long deadline = System.nanoTime() + settings.spinMicros() * 1_000L;
+        while (offered == watchFrom && System.nanoTime() < deadline) {
+            Thread.onSpinWait();
+            Thread.yield();
+        }
+    }
+
+    /** Under the lock: the next batch, cut where the origin stream or its numbering changes. */
+    private Batch takeBatch() {
+        int max = (int) Math.min(tailSeq - sendSeq, settings.batchMax());
+        int first = (int) (sendSeq & mask);
+        String originStream = originStreams[first];
+        long originFirstSeq = originSeqs[first];
+        int n = 1;
+        while (n < max) {
+            int slot = (int) ((sendSeq + n) & mask);
+            if (!originStreams[slot].equals(originStream) || originSeqs[slot] != originFirstSeq + n) {
+                break;
+            }
+            n++;
+        }
+        Object[] values = new Object[n];
+        for (int i = 0; i < n; i++) {
+            values[i] = ring[(int) ((sendSeq + i) & mask)];
+        }
+        Batch batch = new Batch(sink, generation, sendSeq, originStream, originFirstSeq, values);
+        sendSeq += n;
+        inFlight++;
+        return batch;
+    }
+
+    /** One call's worth: consecutive values of one origin stream, for the sink of one generation. */
+    private record Batch(ValueSink target, long generation, long firstSeq, String originStream, long originFirstSeq,
+                         Object[] values) {
     }
 
     private boolean readyToSend() {
@@ -261,8 +319,9 @@ public final class OutboundLink implements AutoCloseable {
         return inFlight < (probing ? 1 : settings.window());
     }
 
-    private void call(ValueSink target, long firstSeq, String originStream, long originFirstSeq, Object[] values,
-                      long callGeneration) {
+    private void call(Batch batch) {
+        Object[] values = batch.values();
+        long firstSeq = batch.firstSeq();
         Value[] encoded = new Value[values.length];
         for (int i = 0; i < values.length; i++) {
             encoded[i] = ValueCodec.encode(values[i]);
@@ -270,7 +329,8 @@ public final class OutboundLink implements AutoCloseable {
         long expected;
         String failure;
         try {
-            expected = target.deliver(new ValueBatch(id, firstSeq, originStream, originFirstSeq, encoded));
+            expected = batch.target().deliver(
+                    new ValueBatch(id, firstSeq, batch.originStream(), batch.originFirstSeq(), encoded));
             failure = null;
         } catch (UnknownLink e) {
             expected = -1;
@@ -282,7 +342,7 @@ public final class OutboundLink implements AutoCloseable {
         boolean restored = false;
         boolean newlyBroken = false;
         synchronized (lock) {
-            if (callGeneration == generation) {
+            if (batch.generation() == generation) {
                 inFlight--;
                 if (failure == null) {
                     acknowledge(expected);

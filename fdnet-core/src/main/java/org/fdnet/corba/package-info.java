@@ -17,7 +17,9 @@
  * Same-host connections never leave their host's engine. Cross-host values go in batches over two-way
  * calls with at most {@link org.fdnet.corba.LinkSettings#window()} in flight (a oneway flood overflows
  * JacORB's POA queue and drops calls); sequence numbers keep them in order, and a value leaves the sender
- * only when the receiver has applied it, so a restarted receiver gets everything it missed.
+ * only when the receiver has applied it, so a restarted receiver gets everything it missed. The engine hands
+ * values to a link under its commit lock, so a link only queues them there; an idle link's sender watches
+ * for the next one briefly instead of parking, so a lone value does not wait for a thread wake-up.
  *
  * <p>Class map: {@link org.fdnet.corba.OrbRuntime} starts ORBs (JDK 17 fixes) from
  * {@link org.fdnet.corba.OrbSettings} (every JacORB key); {@link org.fdnet.corba.NamingService} runs

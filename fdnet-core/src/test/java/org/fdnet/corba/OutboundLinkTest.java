@@ -90,4 +90,48 @@ class OutboundLinkTest {
         assertThat(waitedMillis).isBetween(OutboundLink.MAX_WRITER_WAIT_MILLIS - 100, 15_000L);
         assertThat(link.lost()).isEqualTo(100 - 16);
     }
+
+    @Test
+    void shouldDeliverEveryValueInOrderWhetherTheSenderWatchedOrParked() throws Exception {
+        // Batches may overtake each other on the ORB's threads (the InboundLink re-orders them), so this sink
+        // checks that each value travels under its own sequence number: value i is written i-th.
+        List<Long> received = new CopyOnWriteArrayList<>();
+        List<String> misplaced = new CopyOnWriteArrayList<>();
+        ValueSink sink = ValueSinkHelper.narrow(orb.activate(new ValueSinkPOA() {
+            @Override
+            public long deliver(ValueBatch batch) {
+                for (int i = 0; i < batch.values.length; i++) {
+                    long value = (Long) ValueCodec.decode(batch.values[i]);
+                    if (value != batch.firstSeq + i) {
+                        misplaced.add("value " + value + " at seq " + (batch.firstSeq + i));
+                    }
+                    received.add(value);
+                }
+                return batch.firstSeq + batch.values.length;
+            }
+        }));
+        // A 200 µs watch: the pauses below land both inside it (the watcher takes the value) and beyond it
+        // (the callers have parked and offer() must wake one).
+        link = new OutboundLink(3, "test#1#3", "bursts", sink, new LinkSettings(4, 8, 1024, 100, 200), SILENT);
+
+        long next = 0;
+        for (int burst = 0; burst < 300; burst++) {
+            for (int i = 0; i <= burst % 20; i++) {
+                link.offer(next++);
+            }
+            long pauseNanos = (burst % 3) * 150_000L; // 0, 150 µs, 300 µs
+            long until = System.nanoTime() + pauseNanos;
+            while (System.nanoTime() < until) {
+                Thread.onSpinWait();
+            }
+        }
+
+        long deadline = System.currentTimeMillis() + 20_000;
+        while (link.acknowledged() < next && System.currentTimeMillis() < deadline) {
+            Thread.sleep(10);
+        }
+        assertThat(link.acknowledged()).isEqualTo(next);
+        assertThat(misplaced).isEmpty();
+        assertThat(received).hasSize((int) next).doesNotHaveDuplicates();
+    }
 }

@@ -24,4 +24,11 @@ class SettingsTest {
         assertThatThrownBy(() -> new LinkSettings(4, 100, 1000, 100))
                 .hasMessageContaining("power of two");
     }
+
+    @Test
+    void shouldRefuseANegativeSpinAndKeepTheSpinWhenTheWindowChanges() {
+        assertThatThrownBy(() -> new LinkSettings(4, 100, 1024, 100, -1))
+                .isInstanceOf(IllegalArgumentException.class).hasMessage("spinMicros must be 0..10000, was -1");
+        assertThat(new LinkSettings(4, 100, 1024, 100, 0).withWindow(2).spinMicros()).isZero();
+    }
 }

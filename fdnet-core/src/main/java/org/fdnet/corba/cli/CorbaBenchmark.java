@@ -32,11 +32,18 @@ public final class CorbaBenchmark implements Runnable {
     @Option(names = "--batch", defaultValue = "4096", description = "values per call at most (default: ${DEFAULT-VALUE})")
     int batch;
 
+    @Option(names = "--spin-micros", defaultValue = "" + LinkSettings.DEFAULT_SPIN_MICROS,
+            description = "how long an idle link on bench-a and bench-probe watches for the next value before its"
+                    + " sender parks; 0 = park at once (default: ${DEFAULT-VALUE})")
+    int spinMicros;
+
     @Override
     public void run() {
-        LinkSettings links = new LinkSettings(window, batch, 1 << 20, 200);
-        System.out.printf("FDNet bench corba: JacORB 3.9 on 127.0.0.1, Java %s, %d cores; link window %d, batch <= %d%n",
-                System.getProperty("java.version"), Runtime.getRuntime().availableProcessors(), window, batch);
+        LinkSettings links = new LinkSettings(window, batch, 1 << 20, 200, spinMicros);
+        System.out.printf("FDNet bench corba: JacORB 3.9 on 127.0.0.1, Java %s, %d cores; link window %d, batch <= %d,"
+                        + " idle watch %d µs%n",
+                System.getProperty("java.version"), Runtime.getRuntime().availableProcessors(), window, batch,
+                spinMicros);
         System.out.println("starting: naming service (in-process), host bench-b (child JVM), hosts bench-a and "
                 + "bench-probe (in-process) ...");
         try (BenchTopology topology = BenchTopology.start(links)) {

@@ -65,7 +65,7 @@ public final class BenchLoggerCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         Path dir = Files.createTempDirectory("fdnet-bench-logger");
-        EmbeddedDatabase embedded = db == null ? EmbeddedDatabase.start(dir.resolve("pg"), 0) : null;
+        EmbeddedDatabase embedded = db == null ? EmbeddedDatabase.startThrowaway(dir.resolve("pg")) : null;
         DatabaseTarget target = embedded != null ? embedded.target() : new DatabaseTarget(db, "postgres", "");
         try {
             System.out.printf("fdnet bench logger: %,d events max, %d s max, batch %d, %d nodes, database %s%n",
@@ -92,6 +92,7 @@ public final class BenchLoggerCommand implements Callable<Integer> {
             if (embedded != null) {
                 embedded.close();
             }
+            Files.deleteIfExists(dir);
         }
     }
 

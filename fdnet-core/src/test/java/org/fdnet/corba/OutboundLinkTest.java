@@ -3,6 +3,7 @@ package org.fdnet.corba;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
+import java.util.TreeMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -41,11 +42,26 @@ class OutboundLinkTest {
     @Test
     void shouldBatchValuesAndFreeThemOnlyWhenAcknowledged() throws Exception {
         List<Long> batchSizes = new CopyOnWriteArrayList<>();
+        // Like InboundLink: with two calls in flight a batch can arrive before the one ahead of it; it is
+        // held back, and the answer is always the next sequence number expected, never more.
         ValueSink sink = ValueSinkHelper.narrow(orb.activate(new ValueSinkPOA() {
+            private final TreeMap<Long, ValueBatch> heldBack = new TreeMap<>();
+            private long expected = -1;
+
             @Override
-            public long deliver(ValueBatch batch) {
-                batchSizes.add((long) batch.values.length);
-                return batch.firstSeq + batch.values.length;
+            public synchronized long deliver(ValueBatch batch) {
+                if (expected < 0) {
+                    expected = batch.firstSeq;
+                }
+                heldBack.put(batch.firstSeq, batch);
+                while (!heldBack.isEmpty() && heldBack.firstKey() <= expected) {
+                    ValueBatch next = heldBack.pollFirstEntry().getValue();
+                    if (next.firstSeq == expected) {
+                        batchSizes.add((long) next.values.length);
+                        expected += next.values.length;
+                    }
+                }
+                return expected;
             }
         }));
         link = new OutboundLink(1, "test#1#1", "test", sink, new LinkSettings(2, 64, 1024, 100), SILENT);

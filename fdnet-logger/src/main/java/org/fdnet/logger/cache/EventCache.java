@@ -271,18 +271,14 @@ public final class EventCache {
     public CacheAnswer history(int sourceId, long from, long to, boolean sourceSeenFromStart) {
         // No cache lock: each container's timeline of this node is read under its own small lock, so the
         // query waits at most for work on this one node, never for the writer's batch or the receivers.
-        List<CachedEvent> found = new ArrayList<>();
-        long statesEvicted = states.range(sourceId, from, to, found);
-        int stateCount = found.size();
-        long commandsEvicted = commands.range(sourceId, from, to, found);
-        if (stateCount > 0 && found.size() > stateCount) {
-            found.sort(Comparator.comparingLong(CachedEvent::time));
+        ArrayList<NetworkEvent> out = new ArrayList<>(0);
+        long statesEvicted = states.range(sourceId, from, to, out);
+        int stateCount = out.size();
+        long commandsEvicted = commands.range(sourceId, from, to, out);
+        if (stateCount > 0 && out.size() > stateCount) {
+            out.sort(Comparator.comparingLong(NetworkEvent::time));
         }
         boolean covered = sourceSeenFromStart && statesEvicted < from && commandsEvicted < from;
-        List<NetworkEvent> out = new ArrayList<>(found.size());
-        for (CachedEvent e : found) {
-            out.add(e.event());
-        }
         return new CacheAnswer(out, covered);
     }
 

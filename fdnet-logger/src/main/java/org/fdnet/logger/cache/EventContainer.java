@@ -1,7 +1,8 @@
 package org.fdnet.logger.cache;
 
-import java.util.List;
+import java.util.ArrayList;
 import java.util.concurrent.atomic.AtomicReferenceArray;
+import org.fdnet.event.NetworkEvent;
 
 /**
  * An event container (thesis, chapter 4 IV): an array indexed by node id whose entries hold the node's
@@ -32,7 +33,7 @@ class EventContainer {
      * the newest time of the node that had left memory at that instant ({@code Long.MIN_VALUE}: none). Safe
      * without the cache's lock.
      */
-    long range(int sourceId, long from, long to, List<CachedEvent> out) {
+    long range(int sourceId, long from, long to, ArrayList<NetworkEvent> out) {
         NodeTimeline t = timeline(sourceId, false);
         return t == null ? Long.MIN_VALUE : t.range(from, to, out);
     }

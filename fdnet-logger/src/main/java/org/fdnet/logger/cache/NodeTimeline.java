@@ -1,7 +1,8 @@
 package org.fdnet.logger.cache;
 
+import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.List;
+import org.fdnet.event.NetworkEvent;
 
 /**
  * The events of one node, sorted by time: the second level of the thesis's index (node id, then time).
@@ -80,13 +81,33 @@ final class NodeTimeline {
     /**
      * Adds the events with {@code from <= time <= to} to {@code out}, in time order, and returns
      * {@link #evictedUpTo()} as of the same instant: both read under one hold of this timeline's monitor, so
-     * "nothing at or after {@code from} has left" is true of exactly the events returned.
+     * "nothing at or after {@code from} has left" is true of exactly the events returned. {@code out} grows
+     * once, to the exact size: a viewer's query makes little garbage (its collections would pause the logger).
      */
-    synchronized long range(long from, long to, List<CachedEvent> out) {
-        for (int i = lowerBound(from); i < tail && items[i].time() <= to; i++) {
-            out.add(items[i]);
+    synchronized long range(long from, long to, ArrayList<NetworkEvent> out) {
+        int first = lowerBound(from);
+        int end = firstAfter(to);
+        if (end > first) {
+            out.ensureCapacity(out.size() + end - first);
+            for (int i = first; i < end; i++) {
+                out.add(items[i].event());
+            }
         }
         return evictedUpTo;
+    }
+
+    private int firstAfter(long time) {
+        int lo = head;
+        int hi = tail;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (items[mid].time() <= time) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo;
     }
 
     private int lowerBound(long time) {

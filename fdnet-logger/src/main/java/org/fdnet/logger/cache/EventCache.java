@@ -30,7 +30,10 @@ import org.fdnet.event.RelationValueEvent;
  * <p>Memory: every event counts its configured size plus its value's length. At the critical level the
  * cache is "pressured": {@link #awaitRoom} holds the receivers back (TCP flow control does the rest) and
  * the writer runs at full rate, until the level falls to normal. {@link #add} never goes beyond the
- * capacity. One lock guards everything (the thesis's integrity concern); each call holds it briefly.
+ * capacity. One lock guards the byte accounting, the unwritten queue, the monitors and every change to the
+ * containers (the thesis's integrity concern); each call holds it briefly. {@link #history} does not take it:
+ * it reads the node's timelines under their own locks (see {@link NodeTimeline}), so a viewer's query never
+ * waits behind the writer's per-batch work or a receiver's batch.
  */
 public final class EventCache {
     private final CacheLimits limits;
@@ -266,24 +269,16 @@ public final class EventCache {
      * from their first event (e.g. a run resumed after a restart).
      */
     public CacheAnswer history(int sourceId, long from, long to, boolean sourceSeenFromStart) {
-        List<CachedEvent> found = new ArrayList<>();
-        lock.lock();
-        boolean covered;
-        try {
-            states.range(sourceId, from, to, found);
-            int stateCount = found.size();
-            commands.range(sourceId, from, to, found);
-            if (stateCount > 0 && found.size() > stateCount) {
-                found.sort(Comparator.comparingLong(CachedEvent::time));
-            }
-            covered = sourceSeenFromStart && states.evictedUpTo(sourceId) < from && commands.evictedUpTo(sourceId) < from;
-        } finally {
-            lock.unlock();
+        // No cache lock: each container's timeline of this node is read under its own small lock, so the
+        // query waits at most for work on this one node, never for the writer's batch or the receivers.
+        ArrayList<NetworkEvent> out = new ArrayList<>(0);
+        long statesEvicted = states.range(sourceId, from, to, out);
+        int stateCount = out.size();
+        long commandsEvicted = commands.range(sourceId, from, to, out);
+        if (stateCount > 0 && out.size() > stateCount) {
+            out.sort(Comparator.comparingLong(NetworkEvent::time));
         }
-        List<NetworkEvent> out = new ArrayList<>(found.size());
-        for (CachedEvent e : found) {
-            out.add(e.event());
-        }
+        boolean covered = sourceSeenFromStart && statesEvicted < from && commandsEvicted < from;
         return new CacheAnswer(out, covered);
     }
 

@@ -1,12 +1,17 @@
 package org.fdnet.logger.cache;
 
+import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.List;
+import org.fdnet.event.NetworkEvent;
 
 /**
  * The events of one node, sorted by time: the second level of the thesis's index (node id, then time).
  * Appending in time order (the normal case: a source's times strictly increase) is O(1); a late event is
- * inserted in place. Old events leave from the head. Not thread-safe: guarded by the cache's lock.
+ * inserted in place. Old events leave from the head.
+ *
+ * <p>Every method holds this timeline's own monitor, so a viewer's query ({@link #range}) reads it without the
+ * cache's lock: it contends only with work on this one node, never with the writer's work on the others.
+ * Changes come from the cache with its lock held (lock order: cache, then timeline — never the reverse).
  */
 final class NodeTimeline {
     private CachedEvent[] items = new CachedEvent[8];
@@ -15,23 +20,23 @@ final class NodeTimeline {
     /** The newest time that ever left this timeline: below it, the database must be asked. */
     private long evictedUpTo = Long.MIN_VALUE;
 
-    int size() {
+    synchronized int size() {
         return tail - head;
     }
 
-    boolean isEmpty() {
+    synchronized boolean isEmpty() {
         return tail == head;
     }
 
-    long evictedUpTo() {
+    synchronized long evictedUpTo() {
         return evictedUpTo;
     }
 
-    CachedEvent first() {
+    synchronized CachedEvent first() {
         return items[head];
     }
 
-    void add(CachedEvent e) {
+    synchronized void add(CachedEvent e) {
         if (tail == items.length) {
             makeRoom();
         }
@@ -46,7 +51,7 @@ final class NodeTimeline {
     }
 
     /** Removes one event (by identity), wherever it is: for the monitored index. */
-    boolean remove(CachedEvent e) {
+    synchronized boolean remove(CachedEvent e) {
         for (int i = head; i < tail; i++) {
             if (items[i] == e) {
                 System.arraycopy(items, i + 1, items, i, tail - i - 1);
@@ -58,7 +63,7 @@ final class NodeTimeline {
     }
 
     /** Pops evictable events from the head; returns the bytes freed. */
-    long evictHead() {
+    synchronized long evictHead() {
         long freed = 0;
         while (head < tail && items[head].evictable()) {
             CachedEvent e = items[head];
@@ -73,10 +78,36 @@ final class NodeTimeline {
         return freed;
     }
 
-    void range(long from, long to, List<CachedEvent> out) {
-        for (int i = lowerBound(from); i < tail && items[i].time() <= to; i++) {
-            out.add(items[i]);
+    /**
+     * Adds the events with {@code from <= time <= to} to {@code out}, in time order, and returns
+     * {@link #evictedUpTo()} as of the same instant: both read under one hold of this timeline's monitor, so
+     * "nothing at or after {@code from} has left" is true of exactly the events returned. {@code out} grows
+     * once, to the exact size: a viewer's query makes little garbage (its collections would pause the logger).
+     */
+    synchronized long range(long from, long to, ArrayList<NetworkEvent> out) {
+        int first = lowerBound(from);
+        int end = firstAfter(to);
+        if (end > first) {
+            out.ensureCapacity(out.size() + end - first);
+            for (int i = first; i < end; i++) {
+                out.add(items[i].event());
+            }
         }
+        return evictedUpTo;
+    }
+
+    private int firstAfter(long time) {
+        int lo = head;
+        int hi = tail;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (items[mid].time() <= time) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo;
     }
 
     private int lowerBound(long time) {

@@ -9,6 +9,10 @@
  *                               └─▶ unwritten queue ─takeBatch─▶ BatchWriter ─commit─▶ committed()
  *   an event leaves memory only when committed AND no monitor still waits for it
  *   usedBytes ≥ critical → pressured (receivers wait, writer full rate) … ≤ normal → released
+ *   viewer ─▶ EventCache.history ─▶ the node's NodeTimeline, under its own lock (not the cache's)
  * </pre>
+ *
+ * <p>Locks: the cache's lock guards accounting, the queue, monitors and every change; each NodeTimeline's
+ * own lock is taken inside it by changes and alone by queries — never the other way round.
  */
 package org.fdnet.logger.cache;

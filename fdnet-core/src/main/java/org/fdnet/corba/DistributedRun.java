@@ -16,6 +16,7 @@ import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.cli.ValueAssignment;
 import org.fdnet.runtime.Placement;
 
 /**
@@ -121,13 +122,15 @@ public final class DistributedRun {
     private static boolean applySets(List<String> sets, DeploymentPlan plan, NetworkDeployment deployment,
                                      PrintWriter err) {
         for (String set : sets) {
-            int eq = set.indexOf('=');
-            if (eq < 0) {
-                err.println("--set " + set + ": expected MODULE/NODE=VALUE");
+            ValueAssignment assignment;
+            try {
+                assignment = ValueAssignment.parse(set);
+            } catch (IllegalArgumentException e) {
+                err.println("--set " + set + ": " + e.getMessage());
                 err.flush();
                 return false;
             }
-            NodeRef ref = NodeRef.parse(set.substring(0, eq).strip(), ModuleInfo.MAIN);
+            NodeRef ref = assignment.data();
             String host = plan.hosts().stream()
                     .filter(h -> plan.shareOf(h).nodes().stream().anyMatch(p -> p.ref().equals(ref)))
                     .findFirst().orElse(null);
@@ -137,7 +140,7 @@ public final class DistributedRun {
                 return false;
             }
             try {
-                deployment.host(host).write(IdlMapping.id(ref), ValueCodec.encode(set.substring(eq + 1)));
+                deployment.host(host).write(IdlMapping.id(ref), ValueCodec.encode(assignment.value()));
             } catch (org.omg.CORBA.UserException | org.omg.CORBA.SystemException e) {
                 err.println("--set " + set + ": host " + host + " refused: "
                         + (e instanceof org.fdnet.corba.idl.Refused r ? r.reason : e.toString()));

@@ -229,14 +229,9 @@ public final class RunCommand implements Callable<Integer> {
             }
         }
         for (String set : sets) {
-            int eq = set.indexOf('=');
-            if (eq < 0) {
-                err.println("--set " + set + ": expected MODULE/NODE=VALUE");
-                err.flush();
-                return false;
-            }
             try {
-                controller.setValue(NodeRef.parse(set.substring(0, eq).strip(), ModuleInfo.MAIN), set.substring(eq + 1));
+                ValueAssignment assignment = ValueAssignment.parse(set);
+                controller.setValue(assignment.data(), assignment.value());
             } catch (IllegalArgumentException e) {
                 err.println("--set " + set + ": " + e.getMessage());
                 err.flush();

@@ -1,0 +1,126 @@
+package org.fdnet.roq.sim;
+
+import java.util.SplittableRandom;
+
+/**
+ * The terrain's heights on a regular grid: {@code rows} along y, {@code cols} along x, row-major from (−length/2,
+ * −width/2). What MuJoCo's heightfield is filled with, and what the view draws. Heights are ≥ 0 m.
+ */
+public final class Heightfield {
+    /** Clear ground kept around the start of a rubble course, m (the robot is set down on level ground). */
+    public static final double START_CLEARANCE = 0.6;
+
+    private final int rows;
+    private final int cols;
+    private final double length;
+    private final double width;
+    private final float[] heights;
+
+    private Heightfield(int rows, int cols, double length, double width, float[] heights) {
+        this.rows = rows;
+        this.cols = cols;
+        this.length = length;
+        this.width = width;
+        this.heights = heights;
+    }
+
+    /** Builds the terrain of {@code course} (deterministic: same course, same heights). */
+    public static Heightfield of(Course course) {
+        int cols = (int) Math.round(course.length() / course.cellSize()) + 1;
+        int rows = (int) Math.round(course.width() / course.cellSize()) + 1;
+        float[] h = new float[rows * cols];
+        double tan = Math.tan(Math.toRadians(course.slopeDegrees()));
+        int blocksX = (int) Math.ceil(course.length() / course.rubbleBlock());
+        int blocksY = (int) Math.ceil(course.width() / course.rubbleBlock());
+        double[] block = new double[blocksX * blocksY];
+        SplittableRandom random = new SplittableRandom(course.seed());
+        for (int i = 0; i < block.length; i++) {
+            block[i] = random.nextDouble() * course.rubbleHeight();
+        }
+        for (int r = 0; r < rows; r++) {
+            for (int c = 0; c < cols; c++) {
+                double x = -course.length() / 2 + c * course.length() / (cols - 1);
+                double y = -course.width() / 2 + r * course.width() / (rows - 1);
+                double z = switch (course.terrain()) {
+                    case FLAT -> 0;
+                    case SLOPE -> Math.max(0, x) * tan;
+                    case RUBBLE -> {
+                        if (Math.hypot(x - course.startX(), y - course.startY()) < START_CLEARANCE) {
+                            yield 0;
+                        }
+                        int bx = Math.min(blocksX - 1, (int) ((x + course.length() / 2) / course.rubbleBlock()));
+                        int by = Math.min(blocksY - 1, (int) ((y + course.width() / 2) / course.rubbleBlock()));
+                        yield block[by * blocksX + bx];
+                    }
+                };
+                h[r * cols + c] = (float) Math.max(0, z);
+            }
+        }
+        return new Heightfield(rows, cols, course.length(), course.width(), h);
+    }
+
+    /** Grid points along y. */
+    public int rows() {
+        return rows;
+    }
+
+    /** Grid points along x. */
+    public int cols() {
+        return cols;
+    }
+
+    /** Extent along x, m. */
+    public double length() {
+        return length;
+    }
+
+    /** Extent along y, m. */
+    public double width() {
+        return width;
+    }
+
+    /** Height at grid point (row, col), m. */
+    public double height(int row, int col) {
+        return heights[row * cols + col];
+    }
+
+    /** x of column {@code col}, m. */
+    public double x(int col) {
+        return -length / 2 + col * length / (cols - 1);
+    }
+
+    /** y of row {@code row}, m. */
+    public double y(int row) {
+        return -width / 2 + row * width / (rows - 1);
+    }
+
+    /** The tallest point, m. */
+    public double maxHeight() {
+        double m = 0;
+        for (float v : heights) {
+            m = Math.max(m, v);
+        }
+        return m;
+    }
+
+    /** Height at (x, y), bilinear between grid points (what MuJoCo's heightfield surface is), m; 0 off the grid. */
+    public double heightAt(double x, double y) {
+        double fc = (x + length / 2) / length * (cols - 1);
+        double fr = (y + width / 2) / width * (rows - 1);
+        if (fc < 0 || fr < 0 || fc > cols - 1 || fr > rows - 1) {
+            return 0;
+        }
+        int c0 = Math.min(cols - 2, (int) fc);
+        int r0 = Math.min(rows - 2, (int) fr);
+        double tc = fc - c0;
+        double tr = fr - r0;
+        double a = height(r0, c0) * (1 - tc) + height(r0, c0 + 1) * tc;
+        double b = height(r0 + 1, c0) * (1 - tc) + height(r0 + 1, c0 + 1) * tc;
+        return a * (1 - tr) + b * tr;
+    }
+
+    /** A copy of the heights, row-major. */
+    public float[] toArray() {
+        return heights.clone();
+    }
+}

@@ -296,9 +296,8 @@ roq_sim *roq_open(const char *mjcf, const float *heights, int nheights, const do
                  s->m->nhfield, s->m->nhfield ? s->m->hfield_nrow[0] * s->m->hfield_ncol[0] : 0, nheights);
         return fail(s, error, error_size, msg);
     }
-    double elevation = s->m->hfield_size[2];
-    for (int i = 0; i < nheights; i++) {
-        s->m->hfield_data[i] = (float)(heights[i] / elevation);
+    for (int i = 0; i < nheights; i++) { /* Java scaled them to 0..1 of the elevation range */
+        s->m->hfield_data[i] = heights[i];
     }
     if (s->m->njnt != 1 + ROQ_LEGS * 4 || s->m->jnt_type[0] != mjJNT_FREE) {
         snprintf(msg, sizeof msg, "model has %d joints, expected a free joint and %d leg joints", s->m->njnt,

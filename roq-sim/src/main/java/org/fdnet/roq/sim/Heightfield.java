@@ -4,7 +4,9 @@ import java.util.SplittableRandom;
 
 /**
  * The terrain's heights on a regular grid: {@code rows} along y, {@code cols} along x, row-major from (−length/2,
- * −width/2). What MuJoCo's heightfield is filled with, and what the view draws. Heights are ≥ 0 m.
+ * −width/2). What MuJoCo's heightfield is filled with, and what the view draws. Each fragile cell sits in a pit of
+ * its own height carved into the terrain, its top flush with the ground around ({@link #cellTop(int)}): when it
+ * breaks, the pit opens.
  */
 public final class Heightfield {
     /** Clear ground kept around the start of a rubble course, m (the robot is set down on level ground). */
@@ -15,13 +17,15 @@ public final class Heightfield {
     private final double length;
     private final double width;
     private final float[] heights;
+    private final double[] cellTops;
 
-    private Heightfield(int rows, int cols, double length, double width, float[] heights) {
+    private Heightfield(int rows, int cols, double length, double width, float[] heights, double[] cellTops) {
         this.rows = rows;
         this.cols = cols;
         this.length = length;
         this.width = width;
         this.heights = heights;
+        this.cellTops = cellTops;
     }
 
     /** Builds the terrain of {@code course} (deterministic: same course, same heights). */
@@ -56,7 +60,28 @@ public final class Heightfield {
                 h[r * cols + c] = (float) Math.max(0, z);
             }
         }
-        return new Heightfield(rows, cols, course.length(), course.width(), h);
+        Heightfield ground = new Heightfield(rows, cols, course.length(), course.width(), h, new double[0]);
+        double[] tops = new double[course.fragileCells().size()];
+        for (int i = 0; i < tops.length; i++) {
+            tops[i] = ground.heightAt(course.fragileCells().get(i).x(), course.fragileCells().get(i).y());
+        }
+        float[] carved = h.clone();
+        for (int i = 0; i < tops.length; i++) {
+            FragileCell cell = course.fragileCells().get(i);
+            for (int r = 0; r < rows; r++) {
+                for (int c = 0; c < cols; c++) {
+                    if (cell.contains(ground.x(c), ground.y(r))) {
+                        carved[r * cols + c] = (float) Math.min(carved[r * cols + c], tops[i] - cell.height());
+                    }
+                }
+            }
+        }
+        return new Heightfield(rows, cols, course.length(), course.width(), carved, tops);
+    }
+
+    /** The top of fragile cell {@code index}: the terrain's height at its centre before its pit was carved, m. */
+    public double cellTop(int index) {
+        return cellTops[index];
     }
 
     /** Grid points along y. */
@@ -96,11 +121,39 @@ public final class Heightfield {
 
     /** The tallest point, m. */
     public double maxHeight() {
-        double m = 0;
+        double m = heights[0];
         for (float v : heights) {
             m = Math.max(m, v);
         }
         return m;
+    }
+
+    /** The lowest point (a fragile cell's pit may go below 0), m. */
+    public double minHeight() {
+        double m = heights[0];
+        for (float v : heights) {
+            m = Math.min(m, v);
+        }
+        return m;
+    }
+
+    /** The heights scaled to 0..1 over {@link #minHeight()}..{@link #maxHeight()}: MuJoCo's heightfield data. */
+    float[] normalised() {
+        double min = minHeight();
+        double range = Math.max(MIN_ELEVATION_RANGE, maxHeight() - min);
+        float[] n = new float[heights.length];
+        for (int i = 0; i < n.length; i++) {
+            n[i] = (float) ((heights[i] - min) / range);
+        }
+        return n;
+    }
+
+    /** The least elevation range given to MuJoCo (a flat course still needs a non-zero one), m. */
+    static final double MIN_ELEVATION_RANGE = 0.01;
+
+    /** MuJoCo's elevation range for this terrain, m. */
+    double elevationRange() {
+        return Math.max(MIN_ELEVATION_RANGE, maxHeight() - minHeight());
     }
 
     /** Height at (x, y), bilinear between grid points (what MuJoCo's heightfield surface is), m; 0 off the grid. */

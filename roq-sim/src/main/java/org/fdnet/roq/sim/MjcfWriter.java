@@ -27,7 +27,7 @@ public final class MjcfWriter {
     /** The model of the RoQ set down at the course's start, {@code dropHeight} above standing height. */
     public static String write(Course course, Heightfield terrain, double dropHeight) {
         StringBuilder x = new StringBuilder(8192);
-        double elevation = Math.max(0.01, terrain.maxHeight());
+        double elevation = terrain.elevationRange();
         x.append("<mujoco model=\"roq\">\n");
         x.append("  <compiler angle=\"radian\" autolimits=\"true\"/>\n");
         x.append(f("  <option timestep=\"%s\" integrator=\"Euler\" gravity=\"0 0 -9.81\"/>\n", TIMESTEP));
@@ -36,16 +36,16 @@ public final class MjcfWriter {
         x.append(f("    <hfield name=\"terrain\" nrow=\"%d\" ncol=\"%d\" size=\"%s %s %s 0.1\"/>\n",
                 terrain.rows(), terrain.cols(), course.length() / 2, course.width() / 2, elevation));
         x.append("  </asset>\n  <worldbody>\n");
-        x.append("    <geom name=\"terrain\" type=\"hfield\" hfield=\"terrain\"" + GROUND + "/>\n");
+        x.append(f("    <geom name=\"terrain\" type=\"hfield\" hfield=\"terrain\" pos=\"0 0 %s\"%s/>\n",
+                terrain.minHeight(), GROUND));
         List<FragileCell> cells = course.fragileCells();
         for (int i = 0; i < cells.size(); i++) {
             FragileCell c = cells.get(i);
-            double base = terrain.heightAt(c.x(), c.y());
             double halfZ = (c.height() + 0.02) / 2;
             x.append(f("    <geom name=\"fragile_%d\" type=\"box\" pos=\"%s %s %s\" size=\"%s %s %s\"%s/>\n",
-                    i, c.x(), c.y(), base + c.height() - halfZ, c.sizeX() / 2, c.sizeY() / 2, halfZ, GROUND));
+                    i, c.x(), c.y(), terrain.cellTop(i) - halfZ, c.sizeX() / 2, c.sizeY() / 2, halfZ, GROUND));
         }
-        double z = terrain.heightAt(course.startX(), course.startY()) + standingHeight() + dropHeight + 0.001;
+        double z = groundUnderFeet(course, terrain) + standingHeight() + dropHeight + 0.001;
         x.append(f("    <body name=\"body\" pos=\"%s %s %s\">\n", course.startX(), course.startY(), z));
         x.append("      <freejoint name=\"root\"/>\n");
         x.append(f("      <geom name=\"body\" type=\"box\" size=\"%s %s %s\" mass=\"%s\"%s/>\n",
@@ -55,6 +55,28 @@ public final class MjcfWriter {
         }
         x.append("    </body>\n  </worldbody>\n</mujoco>\n");
         return x.toString();
+    }
+
+    /** The highest ground (terrain or fragile cell top) under the body centre and the four standing feet. */
+    static double groundUnderFeet(Course course, Heightfield terrain) {
+        double highest = terrain.heightAt(course.startX(), course.startY());
+        double[] foot = new double[3];
+        for (int leg = 0; leg < LEGS; leg++) {
+            footInBody(leg, STANDING_POSE[0], STANDING_POSE[1], STANDING_POSE[2], foot);
+            double x = course.startX() + foot[0];
+            double y = course.startY() + foot[1];
+            boolean onCell = false;
+            for (int i = 0; i < course.fragileCells().size(); i++) {
+                if (course.fragileCells().get(i).contains(x, y)) {
+                    highest = Math.max(highest, terrain.cellTop(i));
+                    onCell = true;
+                }
+            }
+            if (!onCell) {
+                highest = Math.max(highest, terrain.heightAt(x, y));
+            }
+        }
+        return highest;
     }
 
     private static void leg(StringBuilder x, int leg) {

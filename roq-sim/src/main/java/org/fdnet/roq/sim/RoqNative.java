@@ -17,7 +17,7 @@ final class RoqNative {
     static native int blockSize();
 
     /**
-     * Loads the model file, fills the heightfield, sets the robot in its initial pose and publishes the first
+     * Loads the model file, fills the heightfield with {@code heights} (already scaled to 0..1), sets the robot in its initial pose and publishes the first
      * snapshot into {@code block}. Returns a handle; throws {@link IllegalStateException} with MuJoCo's message.
      */
     static native long open(String mjcfPath, float[] heights, double[] fragile, double[] params, ByteBuffer block);

@@ -93,8 +93,10 @@ public final class RoqNativeLibrary {
 
     /** Why {@code library} is missing: which build prerequisite is absent, and the command. */
     static String missingMessage(Path library) {
-        boolean gcc = onPath("gcc");
-        boolean mujoco = Files.isRegularFile(MUJOCO_HEADER);
+        return missingMessage(library, onPath("gcc"), Files.isRegularFile(MUJOCO_HEADER));
+    }
+
+    static String missingMessage(Path library, boolean gcc, boolean mujoco) {
         StringBuilder m = new StringBuilder("roq-sim: the native library " + library + " is missing");
         if (!gcc || !mujoco) {
             m.append("; the build needs ");

@@ -70,7 +70,7 @@ public final class RoqSimulator implements AutoCloseable {
         try {
             file = Files.createTempFile("roq-", ".xml");
             Files.writeString(file, mjcf);
-            handle = RoqNative.open(file.toString(), terrain.toArray(), fragileFigures(course.fragileCells()),
+            handle = RoqNative.open(file.toString(), terrain.normalised(), fragileFigures(course.fragileCells()),
                     NativeParameters.of(options), block);
         } catch (IOException e) {
             throw new UncheckedIOException("roq-sim: cannot write the model file " + file, e);

@@ -1,0 +1,40 @@
+package org.fdnet.roq.sim;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import org.junit.jupiter.api.Test;
+
+/** In real-time mode the C thread ticks on its own, publishes snapshots, measures wake-ups and takes commands. */
+class RealTimeLoopTest {
+    @Test
+    void shouldTickAndPublishOnItsOwnThread() throws InterruptedException {
+        SensorSnapshot s = new SensorSnapshot();
+        LoopStatistics stats = new LoopStatistics();
+        long last;
+        try (RoqSimulator sim = RoqSimulator.open(Course.flat(), SimMode.REAL_TIME)) {
+            long deadline = System.nanoTime() + 20_000_000_000L;
+            while (sim.read(s) < 300 && System.nanoTime() < deadline) {
+                Thread.sleep(10);
+            }
+            assertThat(s.tick()).as("ticks within 20 s").isGreaterThanOrEqualTo(300);
+            long before = s.tick();
+            sim.send(new JointCommand().target(0, 0.2));
+            while (sim.read(s) < before + 300 && System.nanoTime() < deadline) {
+                Thread.sleep(10);
+            }
+            assertThat(s.jointAngle(0)).as("the command reached the loop").isCloseTo(0.2, org.assertj.core.data.Offset.offset(0.05));
+            sim.statistics(stats);
+            assertThat(stats.ticks()).isGreaterThanOrEqualTo(before + 300);
+            assertThat(stats.latencySamples()).isGreaterThanOrEqualTo(before);
+            assertThat(stats.commandsApplied()).isEqualTo(1);
+            assertThat(stats.latencyPercentileNanos(50)).isPositive();
+            assertThat(stats.latencyPercentileNanos(99)).isGreaterThanOrEqualTo(stats.latencyPercentileNanos(50));
+            org.assertj.core.api.Assertions.assertThatThrownBy(() -> sim.step(1)).isInstanceOf(IllegalStateException.class)
+                    .hasMessageContaining("STEPPED");
+            sim.close();
+            last = sim.read(s);
+            Thread.sleep(50);
+            assertThat(sim.read(s)).as("stopped after close").isEqualTo(last);
+        }
+    }
+}

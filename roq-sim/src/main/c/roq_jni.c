@@ -1,5 +1,6 @@
 /* JNI glue: org.fdnet.roq.sim.RoqNative. Called to open, step, start, stop and close; never per tick. */
 #include <jni.h>
+#include <stdio.h>
 #include <string.h>
 #include "org_fdnet_roq_sim_RoqNative.h"
 #include "roq_sim.h"
@@ -129,6 +130,17 @@ JNIEXPORT jdouble JNICALL Java_org_fdnet_roq_sim_RoqNative_modelValue(JNIEnv *en
         id = mj_name2id(m, mjOBJ_GEOM, name);
         if (id >= 0) v = s->d->geom_xpos[3 * id + (what - 4)];
         break;
+    case 10: { /* ground height under "x y": a ray straight down at the ground geoms */
+        double x, y;
+        if (sscanf(name, "%lf %lf", &x, &y) == 2) {
+            static const mjtByte ground_only[mjNGROUP] = {1, 0, 0, 0, 0, 0};
+            mjtNum pnt[3] = {x, y, 10.0}, vec[3] = {0, 0, -1};
+            int geom = -1;
+            mjtNum dist = mj_ray(m, s->d, pnt, vec, ground_only, 1, -1, &geom);
+            if (dist >= 0) v = 10.0 - dist;
+        }
+        break;
+    }
     default:
         break;
     }

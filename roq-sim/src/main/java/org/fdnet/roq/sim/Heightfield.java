@@ -1,5 +1,6 @@
 package org.fdnet.roq.sim;
 
+import java.util.List;
 import java.util.SplittableRandom;
 
 /**
@@ -18,8 +19,11 @@ public final class Heightfield {
     private final double width;
     private final float[] heights;
     private final double[] cellTops;
+    private final List<FragileCell> cells;
 
-    private Heightfield(int rows, int cols, double length, double width, float[] heights, double[] cellTops) {
+    private Heightfield(int rows, int cols, double length, double width, float[] heights, double[] cellTops,
+                        List<FragileCell> cells) {
+        this.cells = cells;
         this.rows = rows;
         this.cols = cols;
         this.length = length;
@@ -60,7 +64,7 @@ public final class Heightfield {
                 h[r * cols + c] = (float) Math.max(0, z);
             }
         }
-        Heightfield ground = new Heightfield(rows, cols, course.length(), course.width(), h, new double[0]);
+        Heightfield ground = new Heightfield(rows, cols, course.length(), course.width(), h, new double[0], List.of());
         double[] tops = new double[course.fragileCells().size()];
         for (int i = 0; i < tops.length; i++) {
             tops[i] = ground.heightAt(course.fragileCells().get(i).x(), course.fragileCells().get(i).y());
@@ -76,7 +80,12 @@ public final class Heightfield {
                 }
             }
         }
-        return new Heightfield(rows, cols, course.length(), course.width(), carved, tops);
+        return new Heightfield(rows, cols, course.length(), course.width(), carved, tops, course.fragileCells());
+    }
+
+    /** The course's fragile cells, in their order (the snapshot's broken-cell indices). */
+    public List<FragileCell> fragileCells() {
+        return cells;
     }
 
     /** The top of fragile cell {@code index}: the terrain's height at its centre before its pit was carved, m. */

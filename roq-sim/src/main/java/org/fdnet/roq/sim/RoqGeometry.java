@@ -202,6 +202,26 @@ public final class RoqGeometry {
     public static final double WHEEL_MAX_SPEED = 10.0;
 
     /**
+     * Forward kinematics of the whole leg: writes the hip (yaw axis), the lift axis, the knee and the foot centre in
+     * the body frame into {@code out} as 12 numbers {x, y, z} × 4. Returns {@code out}.
+     */
+    public static double[] legInBody(int leg, double yaw, double lift, double knee, double[] out) {
+        double heading = HIP_YAW_OFFSET[leg] + yaw;
+        double cx = Math.cos(heading);
+        double sy = Math.sin(heading);
+        double[] reach = {0, COXA_LENGTH, COXA_LENGTH + THIGH_LENGTH * Math.cos(lift),
+                COXA_LENGTH + THIGH_LENGTH * Math.cos(lift) + SHANK_LENGTH * Math.cos(lift - knee)};
+        double[] up = {0, 0, THIGH_LENGTH * Math.sin(lift),
+                THIGH_LENGTH * Math.sin(lift) + SHANK_LENGTH * Math.sin(lift - knee)};
+        for (int k = 0; k < 4; k++) {
+            out[3 * k] = HIP_POSITION[leg][0] + reach[k] * cx;
+            out[3 * k + 1] = HIP_POSITION[leg][1] + reach[k] * sy;
+            out[3 * k + 2] = HIP_POSITION[leg][2] + up[k];
+        }
+        return out;
+    }
+
+    /**
      * Forward kinematics: the foot sphere's centre in the body frame for leg {@code leg} at joint angles
      * ({@code yaw}, {@code lift}, {@code knee}), written into {@code out} = {x, y, z}. Returns {@code out}.
      */

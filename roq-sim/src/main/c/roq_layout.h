@@ -41,6 +41,7 @@
 #define S_BROKEN_MASK 552
 #define S_DEPTH_FRAMES 584
 #define S_DEPTH 592
+#define S_END (S_DEPTH + 4 * ROQ_DEPTH_W * ROQ_DEPTH_H)
 
 /* loop statistics (same sequence) */
 #define T_TICKS 4096
@@ -90,6 +91,7 @@
 #define P_IR_PERIOD 40
 #define P_US_PERIOD 41
 #define P_DEPTH_ROW_PERIOD 42
-#define P_COUNT 43
+#define P_RANGE_SENSORS 43
+#define P_COUNT 44
 
 #endif

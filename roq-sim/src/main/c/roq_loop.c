@@ -37,6 +37,7 @@ void roq_record_latency(roq_sim *s, int64_t latency_ns) {
         bin = ROQ_HIST_BINS - 1;
     }
     BLK_I(st, T_HISTOGRAM)[bin]++;
+    s->histogram_bin = (int)bin;
     (*BLK_L(st, T_LATENCY_SAMPLES))++;
     if (latency_ns > *BLK_L(st, T_MAX_LATENCY_NS)) {
         *BLK_L(st, T_MAX_LATENCY_NS) = latency_ns;

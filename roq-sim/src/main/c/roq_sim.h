@@ -35,6 +35,7 @@ typedef struct {
     int64_t tick;
     int64_t snapshot_seq;
     int64_t depth_frames;
+    int histogram_bin;                 /* the latency bin counted this tick, for publish to copy; -1 none */
     uint64_t noise_state;
 
     unsigned char *block;              /* Java's direct buffer */

@@ -161,6 +161,9 @@ static void state_sensors(roq_sim *s) {
 
     /* Range sensors refresh at their own rates (rays are the tick's dearest part); between refreshes the
        snapshot keeps their last reading. */
+    if (p[P_RANGE_SENSORS] == 0) {
+        return;
+    }
     double dir[3];
     if (s->tick % (int64_t)p[P_IR_PERIOD] == 0) {
         direction(p[P_IR_0 + 3], 0, dir);
@@ -245,7 +248,13 @@ static void publish(roq_sim *s) {
     int64_t *seq = BLK_L(s->block, L_SNAPSHOT_SEQ);
     __atomic_store_n(seq, s->snapshot_seq + 1, __ATOMIC_RELAXED);
     __atomic_thread_fence(__ATOMIC_RELEASE);
-    memcpy(s->block + S_TICK, s->stage + S_TICK, C_ISSUED_TICK - S_TICK);
+    /* the snapshot, the statistics' counters, and of the histogram only the bin this tick counted */
+    memcpy(s->block + S_TICK, s->stage + S_TICK, S_END - S_TICK);
+    memcpy(s->block + T_TICKS, s->stage + T_TICKS, T_HISTOGRAM - T_TICKS);
+    if (s->histogram_bin >= 0) {
+        BLK_I(s->block, T_HISTOGRAM)[s->histogram_bin] = BLK_I(s->stage, T_HISTOGRAM)[s->histogram_bin];
+        s->histogram_bin = -1;
+    }
     s->snapshot_seq += 2;
     __atomic_store_n(seq, s->snapshot_seq, __ATOMIC_RELEASE);
 }
@@ -282,6 +291,7 @@ roq_sim *roq_open(const char *mjcf, const float *heights, int nheights, const do
         return NULL;
     }
     s->dma_fd = -1;
+    s->histogram_bin = -1;
     memcpy(s->p, params, sizeof s->p);
     s->block = block;
     s->stage = calloc(1, ROQ_BLOCK_SIZE);
@@ -367,6 +377,14 @@ roq_sim *roq_open(const char *mjcf, const float *heights, int nheights, const do
     }
     s->tick = 0;
     s->depth_frames = 1;
+    if (params[P_RANGE_SENSORS] == 0) {
+        BLK_D(s->stage, S_IR_RANGE)[0] = NAN;
+        BLK_D(s->stage, S_ULTRASONIC_RANGE)[0] = NAN;
+        for (int i = 0; i < ROQ_DEPTH_W * ROQ_DEPTH_H; i++) {
+            BLK_F(s->stage, S_DEPTH)[i] = NAN;
+        }
+        s->depth_frames = 0;
+    }
     *BLK_L(s->stage, S_DEPTH_FRAMES) = s->depth_frames;
     publish(s);
     return s;

@@ -30,7 +30,8 @@ final class NativeParameters {
     static final int IR_PERIOD = 40;
     static final int US_PERIOD = 41;
     static final int DEPTH_ROW_PERIOD = 42;
-    static final int COUNT = 43;
+    static final int RANGE_SENSORS = 43; // 1 = on
+    static final int COUNT = 44;
 
     private NativeParameters() {
     }
@@ -62,6 +63,7 @@ final class NativeParameters {
         p[IR_PERIOD] = IR_PERIOD_TICKS;
         p[US_PERIOD] = ULTRASONIC_PERIOD_TICKS;
         p[DEPTH_ROW_PERIOD] = DEPTH_ROW_PERIOD_TICKS;
+        p[RANGE_SENSORS] = options.rangeSensors() ? 1 : 0;
         p[NOISE] = options.sensorNoise() ? 1 : 0;
         p[NOISE_SEED] = options.noiseSeed();
         return p;

@@ -8,8 +8,15 @@ missing=()
 command -v gcc >/dev/null 2>&1 || missing+=("gcc (not on the PATH)")
 [ -f /usr/include/mujoco/mujoco.h ] || missing+=("libmujoco-dev (no /usr/include/mujoco/mujoco.h)")
 if [ ${#missing[@]} -gt 0 ]; then
-  echo "roq-sim: cannot build the native joint loop: missing ${missing[*]}; install with: apt-get install -y gcc libmujoco-dev" >&2
-  exit 1
+  # As root (CI, a fresh container), install them as .ci/run does for Xvfb; otherwise say the one command.
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "roq-sim: installing gcc libmujoco-dev (missing ${missing[*]}) ..." >&2
+    { DEBIAN_FRONTEND=noninteractive apt-get update -qq && DEBIAN_FRONTEND=noninteractive \
+        apt-get install -y -qq --no-install-recommends gcc libmujoco-dev; } >/dev/null
+  else
+    echo "roq-sim: cannot build the native joint loop: missing ${missing[*]}; install with: sudo apt-get install -y gcc libmujoco-dev" >&2
+    exit 1
+  fi
 fi
 java_home=${JAVA_HOME:-$(dirname "$(dirname "$(readlink -f "$(command -v javac)")")")}
 mkdir -p "$out"

@@ -35,7 +35,10 @@ public final class JointCommand {
         return targets[j];
     }
 
-    /** Drives leg {@code leg}'s wheel at {@code radiansPerSecond} and enables the wheels. Returns this. */
+    /**
+     * Drives leg {@code leg}'s wheel at {@code radiansPerSecond} (positive rolls the foot forward, +x, in the
+     * standing pose) and enables the wheels. Returns this.
+     */
     public JointCommand wheelSpeed(int leg, double radiansPerSecond) {
         wheelSpeeds[leg] = radiansPerSecond;
         wheelsEnabled = true;

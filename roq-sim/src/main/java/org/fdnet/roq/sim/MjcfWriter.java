@@ -97,7 +97,10 @@ public final class MjcfWriter {
         x.append(f("            <geom type=\"capsule\" fromto=\"0 0 0 %s 0 0\" size=\"0.015\" mass=\"%s\"%s/>\n",
                 SHANK_LENGTH - FOOT_RADIUS, SHANK_MASS, ROBOT));
         x.append(f("            <body name=\"%s_wheel\" pos=\"%s 0 0\">\n", n, SHANK_LENGTH));
-        x.append(f("              <joint name=\"%s_wheel\" axis=\"0 0 1\" armature=\"0.002\" damping=\"0.001\"/>\n", n));
+        // The axle points out along the leg (the shank frame's z when the shank hangs down); right legs point the
+        // other way so that a positive wheel speed rolls every foot forward (+x) in the standing pose.
+        x.append(f("              <joint name=\"%s_wheel\" axis=\"0 0 %d\" armature=\"0.002\" damping=\"0.001\"/>\n", n,
+                HIP_YAW_OFFSET[leg] > 0 ? 1 : -1));
         x.append(f("              <geom name=\"%s\" type=\"sphere\" size=\"%s\" mass=\"%s\"%s/>\n",
                 footName(leg), FOOT_RADIUS, FOOT_MASS, ROBOT));
         x.append("            </body>\n          </body>\n        </body>\n      </body>\n");

@@ -11,7 +11,8 @@ class RealTimeLoopTest {
         SensorSnapshot s = new SensorSnapshot();
         LoopStatistics stats = new LoopStatistics();
         long last;
-        try (RoqSimulator sim = RoqSimulator.open(Course.flat(), SimMode.REAL_TIME)) {
+        RoqSimulator sim = RoqSimulator.open(Course.flat(), SimMode.REAL_TIME);
+        try {
             long deadline = System.nanoTime() + 20_000_000_000L;
             while (sim.read(s) < 300 && System.nanoTime() < deadline) {
                 Thread.sleep(10);
@@ -31,10 +32,13 @@ class RealTimeLoopTest {
             assertThat(stats.latencyPercentileNanos(99)).isGreaterThanOrEqualTo(stats.latencyPercentileNanos(50));
             org.assertj.core.api.Assertions.assertThatThrownBy(() -> sim.step(1)).isInstanceOf(IllegalStateException.class)
                     .hasMessageContaining("STEPPED");
+        } finally {
             sim.close();
-            last = sim.read(s);
-            Thread.sleep(50);
-            assertThat(sim.read(s)).as("stopped after close").isEqualTo(last);
         }
+        last = sim.read(s);
+        Thread.sleep(50);
+        assertThat(sim.read(s)).as("stopped after close; the last snapshot stays readable").isEqualTo(last);
+        org.assertj.core.api.Assertions.assertThatThrownBy(sim::stateHash).isInstanceOf(IllegalStateException.class)
+                .hasMessageContaining("closed");
     }
 }

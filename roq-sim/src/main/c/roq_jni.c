@@ -141,6 +141,15 @@ JNIEXPORT jdouble JNICALL Java_org_fdnet_roq_sim_RoqNative_modelValue(JNIEnv *en
         }
         break;
     }
+    case 11: case 12: { /* a ray "x y z vx vy vz" (unit vector) at the ground: 11 roq-sim's, 12 MuJoCo's mj_ray */
+        double r[6];
+        if (sscanf(name, "%lf %lf %lf %lf %lf %lf", r, r + 1, r + 2, r + 3, r + 4, r + 5) == 6) {
+            static const mjtByte ground_only[mjNGROUP] = {1, 0, 0, 0, 0, 0};
+            int geom = -1;
+            v = what == 11 ? roq_ground_ray(s, r, r + 3, 1e6) : mj_ray(m, s->d, r, r + 3, ground_only, 1, -1, &geom);
+        }
+        break;
+    }
     default:
         break;
     }

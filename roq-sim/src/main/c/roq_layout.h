@@ -6,7 +6,7 @@
 #ifndef ROQ_LAYOUT_H
 #define ROQ_LAYOUT_H
 
-#define ROQ_LAYOUT_VERSION 1
+#define ROQ_LAYOUT_VERSION 2
 #define ROQ_BLOCK_SIZE 16384
 
 #define ROQ_JOINTS 12
@@ -54,6 +54,7 @@
 #define T_COMMANDS_OUT_OF_RANGE 4152
 #define T_COMMANDS_STALE 4160
 #define T_RT_FLAGS 4168
+#define T_MAX_TICK_NS 4176
 #define T_HISTOGRAM 4224
 
 /* command slot (under the command sequence, written by Java) */

@@ -54,10 +54,14 @@ static void *loop(void *arg) {
         set_ns(&deadline, next);
         clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &deadline, NULL);
         clock_gettime(CLOCK_MONOTONIC, &now);
-        roq_record_latency(s, ns(&now) - next);
+        int64_t woke = ns(&now);
+        roq_record_latency(s, woke - next);
         roq_tick(s);
         clock_gettime(CLOCK_MONOTONIC, &now);
         int64_t end = ns(&now);
+        if (end - woke > *BLK_L(s->stage, T_MAX_TICK_NS)) {
+            *BLK_L(s->stage, T_MAX_TICK_NS) = end - woke; /* published with the next tick */
+        }
         next += s->period_ns;
         if (end > next) {
             unsigned char *st = s->stage;

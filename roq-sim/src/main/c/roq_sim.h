@@ -16,6 +16,7 @@ typedef struct {
     double p[P_COUNT];
 
     int body_id;                       /* the robot's free body */
+    int terrain_geom;                  /* the heightfield geom */
     int qadr[ROQ_JOINTS], dadr[ROQ_JOINTS];
     int wheel_dadr[ROQ_LEGS];
     int *geom_role;                    /* per geom: -1, leg 0..3 for a foot, 100 + i for fragile cell i */
@@ -55,6 +56,9 @@ void roq_tick(roq_sim *s);
 void roq_close(roq_sim *s);
 uint64_t roq_state_hash(const roq_sim *s);
 int64_t roq_bare_step_nanos(roq_sim *s, int ticks);
+
+/* roq_ray.c: distance along the unit vector vec to the ground (terrain, intact fragile cells), or -1 */
+double roq_ground_ray(const roq_sim *s, const mjtNum pnt[3], const mjtNum vec[3], double max_range);
 
 /* roq_loop.c */
 int roq_start(roq_sim *s, int priority, char *warnings, int warnings_size);

@@ -113,7 +113,7 @@ static void servos(roq_sim *s) {
     }
 }
 
-/* A ray from body-frame point `at` along body-frame direction `dir` at the ground (geom group 0: terrain, cells). */
+/* A ray from body-frame point `at` along body-frame unit direction `dir` at the ground (terrain, fragile cells). */
 static double ray(const roq_sim *s, const double at[3], const double dir[3], double max_range) {
     const mjtNum *pos = s->d->xpos + 3 * s->body_id;
     const mjtNum *mat = s->d->xmat + 9 * s->body_id;
@@ -122,10 +122,8 @@ static double ray(const roq_sim *s, const double at[3], const double dir[3], dou
         pnt[r] = pos[r] + mat[3 * r] * at[0] + mat[3 * r + 1] * at[1] + mat[3 * r + 2] * at[2];
         vec[r] = mat[3 * r] * dir[0] + mat[3 * r + 1] * dir[1] + mat[3 * r + 2] * dir[2];
     }
-    static const mjtByte ground_only[mjNGROUP] = {1, 0, 0, 0, 0, 0};
-    int geom = -1;
-    mjtNum dist = mj_ray(s->m, s->d, pnt, vec, ground_only, 1, -1, &geom);
-    return (dist < 0 || dist > max_range) ? max_range : dist;
+    mjtNum dist = roq_ground_ray(s, pnt, vec, max_range);
+    return dist < 0 ? max_range : dist;
 }
 
 static void direction(double pitch_down, double yaw_left, double out[3]) {
@@ -177,19 +175,20 @@ static void state_sensors(roq_sim *s) {
         }
         BLK_D(st, S_ULTRASONIC_RANGE)[0] = noisy(s, nearest, 0.005);
     }
-    /* one row of the depth image every P_DEPTH_ROW_PERIOD ticks */
+    /* The depth image, spread evenly: ROQ_DEPTH_W / P_DEPTH_ROW_PERIOD pixels every tick, a frame every
+       P_DEPTH_ROW_PERIOD × ROQ_DEPTH_H ticks. Spread, because one long ray over a tall heightfield can cost
+       30 µs in MuJoCo 2.2.2: a whole row in one tick overran the 1 ms period on the slope course. */
     int64_t period = (int64_t)p[P_DEPTH_ROW_PERIOD];
-    if (s->tick % period != 0) {
-        return;
-    }
-    int row = (int)((s->tick / period) % ROQ_DEPTH_H);
-    double pitch = p[P_CAMERA_0 + 3] + ((row + 0.5) / ROQ_DEPTH_H - 0.5) * p[P_CAMERA_0 + 5];
-    for (int c = 0; c < ROQ_DEPTH_W; c++) {
+    int per_tick = ROQ_DEPTH_W / (int)period;
+    int first = (int)(s->tick % (period * ROQ_DEPTH_H)) * per_tick;
+    for (int k = first; k < first + per_tick; k++) {
+        int row = k / ROQ_DEPTH_W, c = k % ROQ_DEPTH_W;
+        double pitch = p[P_CAMERA_0 + 3] + ((row + 0.5) / ROQ_DEPTH_H - 0.5) * p[P_CAMERA_0 + 5];
         double yaw = -((c + 0.5) / ROQ_DEPTH_W - 0.5) * p[P_CAMERA_0 + 4];
         direction(pitch, yaw, dir);
-        BLK_F(st, S_DEPTH)[row * ROQ_DEPTH_W + c] = (float)ray(s, p + P_CAMERA_0, dir, p[P_CAMERA_0 + 6]);
+        BLK_F(st, S_DEPTH)[k] = (float)ray(s, p + P_CAMERA_0, dir, p[P_CAMERA_0 + 6]);
     }
-    if (row == ROQ_DEPTH_H - 1) {
+    if (first + per_tick == ROQ_DEPTH_W * ROQ_DEPTH_H) {
         s->depth_frames++;
     }
 }
@@ -315,6 +314,15 @@ roq_sim *roq_open(const char *mjcf, const float *heights, int nheights, const do
         return fail(s, error, error_size, msg);
     }
     s->body_id = s->m->jnt_bodyid[0];
+    s->terrain_geom = -1;
+    for (int g = 0; g < s->m->ngeom; g++) {
+        if (s->m->geom_type[g] == mjGEOM_HFIELD) {
+            s->terrain_geom = g;
+        }
+    }
+    if (s->terrain_geom < 0 || s->m->geom_bodyid[s->terrain_geom] != 0) {
+        return fail(s, error, error_size, "model has no heightfield geom in the world body");
+    }
     s->geom_role = malloc(sizeof(int) * (size_t)s->m->ngeom);
     for (int g = 0; g < s->m->ngeom; g++) {
         s->geom_role[g] = -1;
@@ -371,8 +379,13 @@ roq_sim *roq_open(const char *mjcf, const float *heights, int nheights, const do
     memset(block, 0, ROQ_BLOCK_SIZE);
     *BLK_I(block, L_LAYOUT_VERSION) = ROQ_LAYOUT_VERSION;
     mj_forward(s->m, s->d);
-    for (int row = 0; row < ROQ_DEPTH_H; row++) { /* a whole first image, so readers never see an empty one */
-        s->tick = row * (int64_t)params[P_DEPTH_ROW_PERIOD];
+    int64_t period = (int64_t)params[P_DEPTH_ROW_PERIOD];
+    if (period < 1 || ROQ_DEPTH_W % period != 0) {
+        snprintf(msg, sizeof msg, "depth row period %lld must divide the image width %d", (long long)period, ROQ_DEPTH_W);
+        return fail(s, error, error_size, msg);
+    }
+    for (int64_t t = 0; t < period * ROQ_DEPTH_H; t++) { /* a whole first image, so readers never see an empty one */
+        s->tick = t;
         state_sensors(s);
     }
     s->tick = 0;

@@ -62,10 +62,10 @@ public final class BenchRtCommand implements Callable<Integer> {
             sim.statistics(stats);
         }
         long[] cyclic = cyclictest();
-        System.out.printf(Locale.ROOT, "roq-sim joint loop: %d wake-ups, p50 %d µs, p99 %d µs, max %d µs; overruns %d "
-                        + "(worst %d µs past the next deadline); SCHED_FIFO %s, mlockall %s, cpu_dma_latency %s%n",
+        System.out.printf(Locale.ROOT, "roq-sim joint loop: %d wake-ups, p50 %d µs, p99 %d µs, max %d µs; longest tick %d µs; "
+                        + "overruns %d (worst %d µs past the next deadline); SCHED_FIFO %s, mlockall %s, cpu_dma_latency %s%n",
                 stats.latencySamples(), stats.latencyPercentileNanos(50) / 1000, stats.latencyPercentileNanos(99) / 1000,
-                stats.maxLatencyNanos() / 1000, stats.overruns(), stats.maxOverrunNanos() / 1000, yes(stats.schedFifo()),
+                stats.maxLatencyNanos() / 1000, stats.maxTickNanos() / 1000, stats.overruns(), stats.maxOverrunNanos() / 1000, yes(stats.schedFifo()),
                 yes(stats.memoryLocked()), yes(stats.dmaLatencyHeld()));
         if (cyclic == null) {
             return 1;

@@ -92,10 +92,11 @@ public final class SimCommand implements Callable<Integer> {
                     s.groundTruthBodyPosition(2), s.brokenCellCount(), c.fragileCells().size(), stats.commandsApplied(),
                     stats.badCommands());
             if (realtime) {
-                System.out.printf(Locale.ROOT, "loop: wake-up latency p50 %d µs, p99 %d µs, max %d µs; overruns %d (max %d µs);"
-                                + " SCHED_FIFO %s, mlockall %s, cpu_dma_latency %s%n",
+                System.out.printf(Locale.ROOT, "loop: wake-up latency p50 %d µs, p99 %d µs, max %d µs; longest tick %d µs;"
+                                + " overruns %d (max %d µs); SCHED_FIFO %s, mlockall %s, cpu_dma_latency %s%n",
                         stats.latencyPercentileNanos(50) / 1000, stats.latencyPercentileNanos(99) / 1000,
-                        stats.maxLatencyNanos() / 1000, stats.overruns(), stats.maxOverrunNanos() / 1000,
+                        stats.maxLatencyNanos() / 1000, stats.maxTickNanos() / 1000, stats.overruns(),
+                        stats.maxOverrunNanos() / 1000,
                         yes(stats.schedFifo()), yes(stats.memoryLocked()), yes(stats.dmaLatencyHeld()));
             } else {
                 System.out.printf("state hash %016x (stepped runs are reproducible)%n", sim.stateHash());

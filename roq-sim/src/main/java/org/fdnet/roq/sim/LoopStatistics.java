@@ -20,6 +20,7 @@ public final class LoopStatistics {
     private long commandsOutOfRange;
     private long commandsStale;
     private long realtimeFlags;
+    private long maxTickNanos;
     private final int[] histogram = new int[HISTOGRAM_BINS];
 
     void copyFrom(ByteBuffer b) {
@@ -33,6 +34,7 @@ public final class LoopStatistics {
         commandsOutOfRange = b.getLong(T_COMMANDS_OUT_OF_RANGE);
         commandsStale = b.getLong(T_COMMANDS_STALE);
         realtimeFlags = b.getLong(T_RT_FLAGS);
+        maxTickNanos = b.getLong(T_MAX_TICK_NS);
         for (int i = 0; i < HISTOGRAM_BINS; i++) {
             histogram[i] = b.getInt(T_HISTOGRAM + 4 * i);
         }
@@ -56,6 +58,11 @@ public final class LoopStatistics {
     /** The worst wake-up latency, ns. */
     public long maxLatencyNanos() {
         return maxLatencyNanos;
+    }
+
+    /** The longest tick's work (wake-up to end of publish), ns; measured in {@link SimMode#REAL_TIME} only. */
+    public long maxTickNanos() {
+        return maxTickNanos;
     }
 
     /** Wake-ups measured. */

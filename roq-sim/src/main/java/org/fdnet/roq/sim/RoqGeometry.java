@@ -174,9 +174,9 @@ public final class RoqGeometry {
     /** Depth image height, pixels. */
     public static final int DEPTH_HEIGHT = 24;
     /**
-     * One row of the depth image is cast every this many ticks: a full image every 192 ms (≈ 5 Hz). Rays are the
-     * tick's dearest part (≈ 0.65 µs each against the heightfield here); this keeps the tick within 10 % of a bare
-     * {@code mj_step}.
+     * The depth image advances by one row's worth of pixels every this many ticks, spread evenly (4 rays a tick):
+     * a full image every 192 ms (≈ 5 Hz). Rays are the tick's dearest part (≈ 0.65 µs each against the
+     * heightfield here, up to 30 µs for a long one over a tall heightfield), so few go in any one tick.
      */
     public static final int DEPTH_ROW_PERIOD_TICKS = 8;
     /** The infrared range refreshes every this many ticks (100 Hz). */

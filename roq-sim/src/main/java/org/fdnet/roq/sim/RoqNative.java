@@ -44,7 +44,9 @@ final class RoqNative {
      * A figure of the loaded model for checks against {@link RoqGeometry}: {@code what} 0 body mass (name = body),
      * 1 joint lower limit, 2 joint upper limit (name = joint), 3 whole mass, 4/5/6 x/y/z of geom {@code name} in the
      * world after the current state's kinematics, 7 joint armature, 8 joint frictionloss, 9 joint damping,
-     * 10 the ground's height under {@code name} = "x y" (a ray down at the terrain and fragile cells).
+     * 10 the ground's height under {@code name} = "x y" (a ray down at the terrain and fragile cells), 11 / 12 the
+     * distance along the ray {@code name} = "x y z vx vy vz" (unit vector) to the ground by roq-sim's own ray /
+     * by MuJoCo's {@code mj_ray} (−1: no hit).
      * Returns NaN when the name is unknown.
      */
     static native double modelValue(long handle, int what, String name);

@@ -21,7 +21,7 @@ public final class SharedBlockLayout {
     }
 
     /** Layout version; changes whenever an offset does. */
-    public static final int VERSION = 1;
+    public static final int VERSION = 2;
     /** Size of the block, bytes. */
     public static final int BLOCK_SIZE = 16384;
 
@@ -61,6 +61,7 @@ public final class SharedBlockLayout {
     public static final int T_COMMANDS_OUT_OF_RANGE = 4152;
     public static final int T_COMMANDS_STALE = 4160;
     public static final int T_RT_FLAGS = 4168;
+    public static final int T_MAX_TICK_NS = 4176;
     public static final int T_HISTOGRAM = 4224;
     /** Latency histogram: int32 counts of 1 µs bins; the last bin also holds everything later. */
     public static final int HISTOGRAM_BINS = 2000;

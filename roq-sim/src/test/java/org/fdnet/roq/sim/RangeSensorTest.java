@@ -31,6 +31,37 @@ class RangeSensorTest {
     }
 
     @Test
+    void shouldCastTheSameRaysAtTheGroundAsMuJoCo() throws Exception {
+        Course course = CourseLoader.resolve("fragile").withFragileCells(java.util.List.of(
+                new FragileCell(0.3, 0.2, 0.3, 0.3, 0.04, 500)));
+        try (RoqSimulator sim = RoqSimulator.open(course, SimMode.STEPPED)) {
+            java.util.SplittableRandom random = new java.util.SplittableRandom(11);
+            int hits = 0;
+            for (int i = 0; i < 400; i++) {
+                double x = random.nextDouble(-1.9, 1.9);
+                double y = random.nextDouble(-0.9, 0.9);
+                double z = random.nextDouble(0.05, 0.6);
+                double pitch = random.nextDouble(-0.2, 1.5);
+                double yaw = random.nextDouble(-Math.PI, Math.PI);
+                String ray = x + " " + y + " " + z + " " + Math.cos(pitch) * Math.cos(yaw) + " "
+                        + Math.cos(pitch) * Math.sin(yaw) + " " + -Math.sin(pitch);
+                double ours = sim.modelValue(11, ray);
+                double mujoco = sim.modelValue(12, ray);
+                double hx = x + mujoco * Math.cos(pitch) * Math.cos(yaw);
+                double hy = y + mujoco * Math.cos(pitch) * Math.sin(yaw);
+                if (mujoco > 0 && (Math.abs(hx) > 2 - 1e-6 || Math.abs(hy) > 1 - 1e-6)) {
+                    continue; // MuJoCo's heightfield has side walls up to its full elevation; ours only below the surface
+                }
+                assertThat(ours).as("ray %s", ray).isCloseTo(mujoco, offset(1e-6));
+                if (mujoco > 0) {
+                    hits++;
+                }
+            }
+            assertThat(hits).as("most rays hit the ground").isGreaterThan(250);
+        }
+    }
+
+    @Test
     void shouldReadNaNWithTheRangeSensorsOff() {
         try (RoqSimulator sim = RoqSimulator.open(Course.flat(), SimOptions.of(SimMode.STEPPED).withRangeSensors(false))) {
             SensorSnapshot s = new SensorSnapshot();

@@ -93,6 +93,12 @@ public final class LoopStatistics {
         return HISTOGRAM_BINS * 1000L;
     }
 
+    /** Wake-ups whose latency fell in 1 µs bin {@code bin} (0 ≤ bin < {@link SharedBlockLayout#HISTOGRAM_BINS}; the
+     * last bin also counts every later one). */
+    public long latencyCount(int bin) {
+        return histogram[bin];
+    }
+
     /** Commands taken from the slot and applied (possibly clamped). */
     public long commandsApplied() {
         return commandsApplied;

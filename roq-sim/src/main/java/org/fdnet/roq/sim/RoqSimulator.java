@@ -206,20 +206,32 @@ public final class RoqSimulator implements AutoCloseable {
 
     /**
      * A hash of the whole physical state (time, positions, velocities, accelerations, fragile cells): two stepped
-     * runs of the same course and commands give the same hash.
+     * runs of the same course and commands give the same hash. Stepped mode only.
      */
     public synchronized long stateHash() {
-        return RoqNative.stateHash(liveHandle());
+        return RoqNative.stateHash(steppedHandle("stateHash()"));
     }
 
-    /** Nanoseconds a bare {@code mj_step} loop of this model takes for {@code ticks} steps (the bench baseline). */
+    /**
+     * Nanoseconds a bare {@code mj_step} loop of this model takes for {@code ticks} steps from the current state
+     * (the bench baseline). Stepped mode only.
+     */
     public synchronized long bareStepNanos(int ticks) {
-        return RoqNative.bareStepNanos(liveHandle(), ticks);
+        return RoqNative.bareStepNanos(steppedHandle("bareStepNanos()"), ticks);
     }
 
     /** A figure of the loaded MuJoCo model ({@link RoqNative#modelValue}); for checks against RoqGeometry. */
     synchronized double modelValue(int what, String name) {
-        return RoqNative.modelValue(liveHandle(), what, name);
+        return RoqNative.modelValue(steppedHandle("a model probe"), what, name);
+    }
+
+    /** The handle, for calls that read MuJoCo's state: only safe while no loop thread writes it. */
+    private long steppedHandle(String what) {
+        if (options.mode() != SimMode.STEPPED) {
+            throw new IllegalStateException(what + " reads the simulation's state and is for STEPPED mode; "
+                    + "this simulator runs in real time");
+        }
+        return liveHandle();
     }
 
     private long liveHandle() {

@@ -39,6 +39,6 @@ class RealTimeLoopTest {
         Thread.sleep(50);
         assertThat(sim.read(s)).as("stopped after close; the last snapshot stays readable").isEqualTo(last);
         org.assertj.core.api.Assertions.assertThatThrownBy(sim::stateHash).isInstanceOf(IllegalStateException.class)
-                .hasMessageContaining("closed");
+                .hasMessageContaining("STEPPED");
     }
 }

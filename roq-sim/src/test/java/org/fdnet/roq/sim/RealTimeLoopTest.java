@@ -19,15 +19,25 @@ class RealTimeLoopTest {
             }
             assertThat(s.tick()).as("ticks within 20 s").isGreaterThanOrEqualTo(300);
             long before = s.tick();
-            sim.send(new JointCommand().target(0, 0.2));
-            while (sim.read(s) < before + 300 && System.nanoTime() < deadline) {
+            // A command is stale when the loop gets it over 100 ticks after the snapshot it was based on; on a loaded
+            // machine this thread can stall that long between read and send, so it resends, as a controller would.
+            JointCommand command = new JointCommand().target(0, 0.2);
+            while (sim.statistics(stats).commandsApplied() == 0 && System.nanoTime() < deadline) {
+                sim.read(s);
+                sim.send(command);
                 Thread.sleep(10);
             }
-            assertThat(s.jointAngle(0)).as("the command reached the loop").isCloseTo(0.2, org.assertj.core.data.Offset.offset(0.05));
+            long applied = s.tick();
+            while (sim.read(s) < applied + 300 && System.nanoTime() < deadline) {
+                Thread.sleep(10);
+            }
             sim.statistics(stats);
+            assertThat(s.jointAngle(0)).as("the command reached the loop (applied %d, stale %d, tick %d)",
+                    stats.commandsApplied(), stats.commandsStale(), s.tick())
+                    .isCloseTo(0.2, org.assertj.core.data.Offset.offset(0.05));
             assertThat(stats.ticks()).isGreaterThanOrEqualTo(before + 300);
             assertThat(stats.latencySamples()).isGreaterThanOrEqualTo(before);
-            assertThat(stats.commandsApplied()).isEqualTo(1);
+            assertThat(stats.commandsApplied()).isGreaterThanOrEqualTo(1);
             assertThat(stats.latencyPercentileNanos(50)).isPositive();
             assertThat(stats.latencyPercentileNanos(99)).isGreaterThanOrEqualTo(stats.latencyPercentileNanos(50));
             org.assertj.core.api.Assertions.assertThatThrownBy(() -> sim.step(1)).isInstanceOf(IllegalStateException.class)

@@ -118,8 +118,15 @@ int roq_start(roq_sim *s, int priority, char *warnings, int warnings_size) {
     } else {
         warn(warnings, warnings_size, "SCHED_FIFO", rc);
         rc = pthread_create(&s->thread, NULL, loop, s);
-        if (rc != 0) {
+        if (rc != 0) { /* no thread at all: give back what was taken */
             __atomic_store_n(&s->running, 0, __ATOMIC_RELEASE);
+            if (s->dma_fd >= 0) {
+                close(s->dma_fd);
+                s->dma_fd = -1;
+            }
+            if (flags & RT_MLOCKALL) {
+                munlockall();
+            }
             return rc;
         }
     }

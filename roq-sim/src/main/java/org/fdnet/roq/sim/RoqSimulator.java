@@ -79,7 +79,13 @@ public final class RoqSimulator implements AutoCloseable {
         }
         RoqSimulator sim = new RoqSimulator(course, terrain, options, block, handle);
         if (options.mode() == SimMode.REAL_TIME) {
-            String warnings = RoqNative.start(handle, options.priority());
+            String warnings;
+            try {
+                warnings = RoqNative.start(handle, options.priority());
+            } catch (IllegalStateException e) {
+                sim.close();
+                throw e;
+            }
             if (!warnings.isEmpty()) {
                 LOG.warn("roq-sim real-time loop runs without {} (run as root for real-time figures)", warnings);
             }

@@ -165,7 +165,10 @@ public final class Heightfield {
         return Math.max(MIN_ELEVATION_RANGE, maxHeight() - minHeight());
     }
 
-    /** Height at (x, y), bilinear between grid points (what MuJoCo's heightfield surface is), m; 0 off the grid. */
+    /**
+     * Height at (x, y), bilinear between grid points, m; 0 off the grid. MuJoCo triangulates each cell instead: the
+     * two agree at grid points and along cell edges and differ inside a cell by at most its height step.
+     */
     public double heightAt(double x, double y) {
         double fc = (x + length / 2) / length * (cols - 1);
         double fr = (y + width / 2) / width * (rows - 1);

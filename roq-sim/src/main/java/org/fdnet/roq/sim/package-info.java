@@ -10,7 +10,7 @@
  *                                                                        12 servos: PD → motor limits → torque
  *                                                                        mj_step (MuJoCo)
  *  SensorSnapshot ◀─read()── snapshot + LoopStatistics (seqlock) ◀────── sensors: joints, inclinometer, soles,
- *                                                                        IR, ultrasonic, depth row, fragile cells
+ *                                                                        IR, ultrasonic, depth pixels, fragile cells
  * </pre>
  *
  * In {@link org.fdnet.roq.sim.SimMode#REAL_TIME} the tick runs on a C thread at 1 kHz on absolute deadlines; in

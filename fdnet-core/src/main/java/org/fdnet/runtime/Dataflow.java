@@ -1,6 +1,5 @@
 package org.fdnet.runtime;
 
-import java.time.Instant;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.LongAdder;
@@ -34,12 +33,15 @@ final class Dataflow {
     private final LongAdder firings = new LongAdder();
     private final LongAdder writes = new LongAdder();
     private final long startNanos = System.nanoTime();
+    /** Simulated time, or null on the wall clock. */
+    private final DrivenClock driven;
     private volatile Function<RelationNode, Servants> servants = r -> {
         throw new IllegalStateException("no servants in this network");
     };
 
-    Dataflow(EventPublisher events) {
+    Dataflow(EventPublisher events, DrivenClock driven) {
         this.events = events;
+        this.driven = driven;
     }
 
     void attach(Scheduler s) {
@@ -240,12 +242,13 @@ final class Dataflow {
         return true;
     }
 
-    long wallMicros() {
-        Instant now = Instant.now();
-        return now.getEpochSecond() * 1_000_000L + now.getNano() / 1_000L;
+    /** Now, µs since the epoch: the wall time, or the driven clock's. */
+    long nowMicros() {
+        return driven == null ? org.fdnet.event.EventClock.wallMicros() : driven.micros();
     }
 
+    /** Seconds since the network started, or the driven clock's simulated seconds. */
     double secondsSinceStart() {
-        return (System.nanoTime() - startNanos) / 1e9;
+        return driven == null ? (System.nanoTime() - startNanos) / 1e9 : driven.seconds();
     }
 }

@@ -42,6 +42,7 @@ public final class BatchWriter implements Runnable {
     private volatile String databaseState = "connecting";
     private volatile long batches;
     private volatile int lastBatchRows;
+    private volatile BatchObserver observer;
     private final BatchSizer sizer;
     private Connection connection;
 
@@ -58,6 +59,11 @@ public final class BatchWriter implements Runnable {
     /** Events in the last batch taken (it grows with the backlog, see {@link BatchSizer}). */
     public int lastBatchRows() {
         return lastBatchRows;
+    }
+
+    /** Sets (or with null removes) the one observer told of each committed batch. */
+    public void observe(BatchObserver observer) {
+        this.observer = observer;
     }
 
     /** The most events one batch may take ({@code writer.maxBatchRows}, at least the batch size). */
@@ -132,6 +138,10 @@ public final class BatchWriter implements Runnable {
                     lastBatchRows = batch.size();
                     if (!write(batch)) {
                         break;
+                    }
+                    BatchObserver o = observer;
+                    if (o != null) {
+                        o.committed(batch);
                     }
                     timerStart = System.nanoTime();
                 } else if (timerExpired) {

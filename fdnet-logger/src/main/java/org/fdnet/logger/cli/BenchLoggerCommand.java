@@ -10,11 +10,13 @@ import java.sql.Statement;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.LongSupplier;
 import org.HdrHistogram.Histogram;
 import org.fdnet.event.client.ViewerClient;
 import org.fdnet.logger.NetworkStateLogger;
 import org.fdnet.logger.cache.CachedEvent;
 import org.fdnet.logger.cache.EventCache;
+import org.fdnet.logger.cache.MonitorSubscriber;
 import org.fdnet.logger.config.LoggerConfig;
 import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.logger.store.DatabaseTarget;
@@ -135,7 +137,7 @@ public final class BenchLoggerCommand implements Callable<Integer> {
             sizes.add(b.size());
         });
         ProducerProcess.Outcome out;
-        try (ProducerProcess producer = new ProducerProcess(logger.receiverPort(), events, seconds, nodes, 0, "sustained", false)) {
+        try (ProducerProcess producer = new ProducerProcess(logger.receiverPort(), events, seconds, nodes, 0, "sustained", false, 0)) {
             while (producer.isAlive()) {
                 Thread.sleep(5000);
                 if (producer.isAlive()) {
@@ -188,7 +190,7 @@ public final class BenchLoggerCommand implements Callable<Integer> {
         });
         long before = logger.cache().committedCount();
         try (ProducerProcess producer = new ProducerProcess(logger.receiverPort(), latencyRate * latencySeconds,
-                latencySeconds + 30, nodes, latencyRate, "latency", false)) {
+                latencySeconds + 30, nodes, latencyRate, "latency", false, 0)) {
             producer.outcome();
         }
         logger.writer().observe(null);
@@ -208,21 +210,24 @@ public final class BenchLoggerCommand implements Callable<Integer> {
                 burst, burstNodes, cacheMb);
         EventCache cache = logger.cache();
         SourceDirectory directory = logger.directory();
-        try (ProducerProcess producer = new ProducerProcess(logger.receiverPort(), burst, 3600, burstNodes, 0, "burst", true);
+        List<CachedEvent> held = new java.util.ArrayList<>();
+        MonitorSubscriber plot = held::add; // a viewer plotting the node: its events stay in memory after their commit
+        try (ProducerProcess producer = new ProducerProcess(logger.receiverPort(), burst, 3600, burstNodes, 0, "burst", true,
+                (int) Math.min(Integer.MAX_VALUE, burst + burstNodes + 1000));
              ViewerClient viewer = new ViewerClient("127.0.0.1", logger.senderPort(), "bench-viewer", e -> { })) {
             producer.awaitNamed(120_000);
             List<org.fdnet.event.wire.LoggedNode> found = viewer.nodes("burst/Data" + QUERY_NODE);
             int node = found.get(0).sourceId();
-            viewer.monitor(node); // as a viewer plotting the node would: its events stay in memory after their commit
-            viewer.nodes("burst/Data" + QUERY_NODE); // the round trip makes sure the monitor is in place
+            cache.subscribe(plot, new int[] {node});
             long receivedBefore = cache.received();
             long t0 = System.nanoTime();
             producer.go();
             while (cache.received() - receivedBefore < burst / 5 && producer.isAlive()) {
                 Thread.sleep(10);
             }
-            inProcessQueries("while the writer drains", cache, directory, node, 1.0);
-            tcpQueries("while the writer drains", viewer, cache, node, 2.0);
+            LongSupplier now = BenchLoggerCommand::nowMicros;
+            inProcessQueries("while the writer drains", cache, directory, node, now, 1.0);
+            tcpQueries("while the writer drains", viewer, cache, node, now, 2.0);
             long inNanos = 0;
             while (producer.isAlive()) {
                 if (inNanos == 0 && cache.received() - receivedBefore >= burst) {
@@ -240,19 +245,23 @@ public final class BenchLoggerCommand implements Callable<Integer> {
             long lost = out.accepted() - burstNodes - stored;
             report.check("[4] burst loss counted in the database", String.format("%,d (accepted %,d, stored %,d)", lost,
                     out.accepted() - burstNodes, stored), "0", lost == 0 && out.lost() == 0);
-            inProcessQueries("writer idle", cache, directory, node, 1.0);
-            tcpQueries("writer idle", viewer, cache, node, 1.0);
-            viewer.unmonitor(node);
+            cache.received(); // a volatile read after the last offer: the held events are visible (the burst is over)
+            long newest = held.isEmpty() ? nowMicros() : held.get(held.size() - 1).time();
+            LongSupplier end = () -> newest; // idle: the last 10 s of the node's data, now over
+            inProcessQueries("writer idle", cache, directory, node, end, 1.0);
+            tcpQueries("writer idle", viewer, cache, node, end, 1.0);
+            cache.unsubscribe(plot, new int[] {node}, held);
         }
     }
 
-    private void inProcessQueries(String when, EventCache cache, SourceDirectory directory, int node, double targetMs) {
+    private void inProcessQueries(String when, EventCache cache, SourceDirectory directory, int node, LongSupplier end,
+                                  double targetMs) {
         Histogram h = new Histogram(3);
         long gcBefore = gcMillis();
         long unwrittenBefore = cache.unwrittenCount();
         int found = 0;
         for (int i = 0; i < 2000; i++) {
-            long to = nowMicros();
+            long to = end.getAsLong();
             long q0 = System.nanoTime();
             EventCache.CacheAnswer a = cache.history(node, to - TEN_SECONDS_US, to, directory.seenFromStart(node));
             h.recordValue((System.nanoTime() - q0) / 1000);
@@ -261,13 +270,14 @@ public final class BenchLoggerCommand implements Callable<Integer> {
         queryFigure("in-process", when, h, found, unwrittenBefore, cache.unwrittenCount(), gcMillis() - gcBefore, targetMs);
     }
 
-    private void tcpQueries(String when, ViewerClient viewer, EventCache cache, int node, double targetMs) throws Exception {
+    private void tcpQueries(String when, ViewerClient viewer, EventCache cache, int node, LongSupplier end, double targetMs)
+            throws Exception {
         Histogram h = new Histogram(3);
         long gcBefore = gcMillis();
         long unwrittenBefore = cache.unwrittenCount();
         int found = 0;
         for (int i = 0; i < 1000; i++) {
-            long to = nowMicros();
+            long to = end.getAsLong();
             long q0 = System.nanoTime();
             found = viewer.history(new int[] {node}, to - TEN_SECONDS_US, to).size();
             h.recordValue((System.nanoTime() - q0) / 1000);

@@ -21,8 +21,10 @@ import org.fdnet.netinfo.NodeRef;
  * ({@code rate} 0) or at {@code rate} events per second — for {@code events} events or {@code seconds}
  * seconds, then waiting until the logger has committed everything. With {@code go}, it prints
  * {@code named} once its names are committed and waits for a line on its input before sending values.
+ * {@code memoryEvents} (0: the client's default) is the client's in-memory window: the burst gives it room
+ * for all its events, so that the logger's receiver and cache — not the client — decide the pace.
  * Prints {@code accepted N lost L acked A}.
- * Usage: {@code BenchProducer HOST PORT EVENTS SECONDS NODES RATE MODULE go|now}
+ * Usage: {@code BenchProducer HOST PORT EVENTS SECONDS NODES RATE MODULE go|now MEMORY_EVENTS}
  */
 public final class BenchProducer {
     private BenchProducer() {
@@ -37,8 +39,12 @@ public final class BenchProducer {
         long rate = Long.parseLong(args[5]);
         String module = args[6];
         boolean waitForGo = args[7].equals("go");
+        int memoryEvents = Integer.parseInt(args[8]);
         LoggerClientSettings settings = LoggerClientSettings.defaults(host, port, "bench-" + module)
                 .withFlushTimeout(Duration.ofMinutes(10));
+        if (memoryEvents > 0) {
+            settings = settings.withMemoryEvents(memoryEvents);
+        }
         EventClock clock = new EventClock();
         try (LoggerClient client = new LoggerClient(settings)) {
             for (int n = 0; n < nodes; n++) {

@@ -20,13 +20,14 @@ final class ProducerProcess implements AutoCloseable {
     record Outcome(long accepted, long lost) {
     }
 
-    ProducerProcess(int port, long events, long seconds, int nodes, long rate, String module, boolean waitForGo)
-            throws IOException {
-        List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx1g",
+    ProducerProcess(int port, long events, long seconds, int nodes, long rate, String module, boolean waitForGo,
+                    int memoryEvents) throws IOException {
+        long heapMb = Math.max(1024, 512 + (long) memoryEvents * 400 / (1 << 20)); // ~400 bytes per event held
+        List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx" + heapMb + "m",
                 "-Dorg.slf4j.simpleLogger.defaultLogLevel=warn",
                 "-cp", System.getProperty("java.class.path"), BenchProducer.class.getName(), "127.0.0.1",
                 Integer.toString(port), Long.toString(events), Long.toString(seconds), Integer.toString(nodes),
-                Long.toString(rate), module, waitForGo ? "go" : "now");
+                Long.toString(rate), module, waitForGo ? "go" : "now", Integer.toString(memoryEvents));
         process = new ProcessBuilder(cmd).redirectErrorStream(true).start();
         reader = new Thread(() -> {
             try (BufferedReader r = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {

@@ -1,6 +1,7 @@
 package org.fdnet.cli;
 
 import java.util.ServiceLoader;
+import org.fdnet.logging.QuietTerminalLogging;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -35,6 +36,7 @@ public final class FdnetCommand implements Runnable {
     }
 
     public static void main(String[] args) {
+        QuietTerminalLogging.select(); // before any logger: third-party INFO to a log file, warnings to the terminal
         System.exit(commandLine().execute(args));
     }
 }

@@ -6,10 +6,12 @@ import org.fdnet.logger.server.ClientInfo;
 
 /**
  * What the logger is doing (the thesis's real-time information): the cache, events per second in and
- * out, the database's state and lag, and the connected cores and viewers with their states.
+ * out, the database's state and lag, the writer's last batch (it grows with the backlog up to its maximum),
+ * and the connected cores and viewers with their states.
  */
 public record LoggerStatus(boolean running, CacheStatus cache, double eventsInPerSecond, double eventsOutPerSecond,
-                           String database, List<ClientInfo> cores, List<ClientInfo> viewers) {
+                           String database, List<ClientInfo> cores, List<ClientInfo> viewers, int batchRows,
+                           int maxBatchRows) {
 
     /** The headless mode's status line. */
     public String line() {
@@ -17,10 +19,10 @@ public record LoggerStatus(boolean running, CacheStatus cache, double eventsInPe
             return "logger stopped";
         }
         return String.format("cache %,d/%,d KiB (%.0f%%)%s | in %,.0f ev/s | out %,.0f ev/s | unwritten %,d, lag %d ms"
-                        + " | db %s | cores %d | viewers %d",
+                        + " | batch %,d (max %,d) | db %s | cores %d | viewers %d",
                 cache.usedBytes() >> 10, cache.capacityBytes() >> 10, cache.usedPercent(),
                 cache.pressured() ? " PRESSURED" : "", eventsInPerSecond, eventsOutPerSecond, cache.unwritten(),
-                cache.lagMillis(), database, active(cores), active(viewers));
+                cache.lagMillis(), batchRows, maxBatchRows, database, active(cores), active(viewers));
     }
 
     private static long active(List<ClientInfo> clients) {

@@ -67,7 +67,7 @@ public final class NetworkStateLogger implements AutoCloseable {
         try {
             DatabaseTarget target;
             if (config.embeddedDatabase()) {
-                embedded = EmbeddedDatabase.start(config.embeddedDirectory(), 0);
+                embedded = EmbeddedDatabase.start(config.embeddedDirectory(), 0, config.embeddedFsync());
                 target = embedded.target();
             } else {
                 target = new DatabaseTarget(config.jdbcUrl(), config.databaseUser(), config.databasePassword());
@@ -128,11 +128,11 @@ public final class NetworkStateLogger implements AutoCloseable {
 
     public LoggerStatus status() {
         if (!running) {
-            return new LoggerStatus(false, null, 0, 0, "-", List.of(), List.of());
+            return new LoggerStatus(false, null, 0, 0, "-", List.of(), List.of(), 0, 0);
         }
         CacheStatus c = cache.status();
         return new LoggerStatus(true, c, in.rate(c.received()), out.rate(c.committed()), writer.databaseState(),
-                receiver.factory().clients(), sender.factory().clients());
+                receiver.factory().clients(), sender.factory().clients(), writer.lastBatchRows(), writer.maxBatchRows());
     }
 
     /** Stops the receivers, lets the writer drain (bounded), then stops the rest. */

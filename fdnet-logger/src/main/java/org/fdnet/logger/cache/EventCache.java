@@ -150,6 +150,16 @@ public final class EventCache {
         }
     }
 
+    /** How many unwritten events (at most {@code max}) are older than {@code minAgeNanos}, without waiting. */
+    public int readyUnwritten(int max, long minAgeNanos) {
+        lock.lock();
+        try {
+            return readyCount(max, minAgeNanos);
+        } finally {
+            lock.unlock();
+        }
+    }
+
     private int readyCount(int want, long minAgeNanos) {
         if (minAgeNanos <= 0) {
             return Math.min(want, unwritten.size());
@@ -170,10 +180,21 @@ public final class EventCache {
      * them) until {@link #committed}; if the write fails the writer retries the same batch.
      */
     public List<CachedEvent> takeBatch(int max) {
+        return takeBatch(max, Long.MAX_VALUE);
+    }
+
+    /** As {@link #takeBatch(int)}, and at most {@code maxBytes} counted bytes (but always one event at least). */
+    public List<CachedEvent> takeBatch(int max, long maxBytes) {
         lock.lock();
         try {
             List<CachedEvent> batch = new ArrayList<>(Math.min(max, unwritten.size()));
+            long bytes = 0;
             while (batch.size() < max && !unwritten.isEmpty()) {
+                CachedEvent next = unwritten.peekFirst();
+                if (!batch.isEmpty() && bytes + next.bytes() > maxBytes) {
+                    break;
+                }
+                bytes += next.bytes();
                 batch.add(unwritten.pollFirst());
             }
             return batch;

@@ -1,66 +1,85 @@
 package org.fdnet.logger.cli;
 
-import java.io.BufferedReader;
-import java.io.InputStreamReader;
 import java.lang.management.ManagementFactory;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.sql.Connection;
 import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.sql.Statement;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.UUID;
 import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.LongSupplier;
 import org.HdrHistogram.Histogram;
-import org.fdnet.event.DataValueEvent;
-import org.fdnet.event.ValueType;
 import org.fdnet.event.client.ViewerClient;
 import org.fdnet.logger.NetworkStateLogger;
 import org.fdnet.logger.cache.CachedEvent;
 import org.fdnet.logger.cache.EventCache;
 import org.fdnet.logger.cache.MonitorSubscriber;
-import org.fdnet.logger.cache.RunProgress;
 import org.fdnet.logger.config.LoggerConfig;
 import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.logger.store.DatabaseTarget;
 import org.fdnet.logger.store.EmbeddedDatabase;
 import org.fdnet.logger.store.SourceDirectory;
-import org.postgresql.PGConnection;
-import org.postgresql.copy.CopyIn;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /**
- * {@code fdnet bench logger}: a separate producer process (the real core client) → logger → PostgreSQL,
- * beside its baseline measured in the same run on the same database: raw COPY of the same rows into the
- * same table, in batches of the same size each sorted by (sourceid, time), one commit per batch. Then the
- * burst (events taken into the cache while the writer drains) and a viewer's query answered from the cache.
+ * {@code fdnet bench logger}, end to end: producer processes (a core's real client) → TCP → receiver →
+ * cache → writer → PostgreSQL (embedded, fsync on), beside baselines measured in the same run on the same
+ * database. Four phases:
+ * <ol>
+ *   <li>sustained: as fast as the logger takes them, {@code --seconds}; loss counted in the database;</li>
+ *   <li>baselines: raw COPY of the same rows in the batch sizes the writer used, and the keyed-COPY limit
+ *       (100,000-row sorted batches);</li>
+ *   <li>event-to-commit latency at a moderate rate ({@code --latency-rate});</li>
+ *   <li>a burst through TCP with the default cache; a viewer's query (in-process and over TCP through a
+ *       {@code ViewerClient}) while the writer drains it and once idle; the burst counted in the database.</li>
+ * </ol>
+ * Every figure is printed beside its target with met / NOT MET, and again in a summary at the end.
  */
 @Command(name = "logger", mixinStandardHelpOptions = true,
-        description = "Benchmark the logger against raw COPY (same run, same database).")
+        description = "Benchmark the logger end to end against raw COPY (same run, same database, fsync on).")
 public final class BenchLoggerCommand implements Callable<Integer> {
-    @Option(names = "--events", defaultValue = "100000000", description = "events the producer sends at most (default 100,000,000: --seconds decides)")
-    long events;
+    private static final int QUERY_NODE = 7;
+    private static final long TEN_SECONDS_US = 10_000_000L;
 
-    @Option(names = "--seconds", defaultValue = "60", description = "producer runs at most this long (default 60)")
+    @Option(names = "--seconds", defaultValue = "60", description = "sustained phase length (default 60)")
     long seconds;
 
-    @Option(names = "--batch", defaultValue = "1000", description = "writer batch size = baseline batch size (default 1000)")
+    @Option(names = "--events", defaultValue = "1000000000", description = "sustained phase: events at most (default: --seconds decides)")
+    long events;
+
+    @Option(names = "--batch", defaultValue = "1000", description = "writer.batchSize, the thesis's latency setting (default 1000)")
     int batch;
 
-    @Option(names = "--nodes", defaultValue = "100", description = "Data nodes the producer writes (default 100)")
+    @Option(names = "--max-batch", defaultValue = "200000", description = "writer.maxBatchRows: batches grow up to this under backlog (default 200000)")
+    int maxBatch;
+
+    @Option(names = "--nodes", defaultValue = "100", description = "Data nodes of the sustained producer (default 100)")
     int nodes;
 
-    @Option(names = "--burst", defaultValue = "5000000", description = "events of the burst (default 5,000,000)")
-    int burst;
+    @Option(names = "--latency-rate", defaultValue = "50000", description = "events/s of the latency phase (default 50000)")
+    long latencyRate;
 
-    @Option(names = "--db", description = "external database jdbc:postgresql://... (default: a fresh embedded one)")
+    @Option(names = "--latency-seconds", defaultValue = "20", description = "latency phase length (default 20)")
+    long latencySeconds;
+
+    @Option(names = "--burst", defaultValue = "5000000", description = "events of the burst (default 5,000,000)")
+    long burst;
+
+    @Option(names = "--cache-mb", defaultValue = "512", description = "memory.cacheCapacityMegabytes (default 512, the logger's default)")
+    int cacheMb;
+
+    @Option(names = "--compare-binary", description = "also time the raw COPY baseline in binary COPY format")
+    boolean compareBinary;
+
+    @Option(names = "--db", description = "external database jdbc:postgresql://... (default: a fresh embedded one, fsync on)")
     String db;
 
-    private long peakHeap;
+    private final TargetReport report = new TargetReport();
+    private final AtomicLong peakHeap = new AtomicLong();
 
     @Override
     public Integer call() throws Exception {
@@ -68,25 +87,31 @@ public final class BenchLoggerCommand implements Callable<Integer> {
         EmbeddedDatabase embedded = db == null ? EmbeddedDatabase.startThrowaway(dir.resolve("pg")) : null;
         DatabaseTarget target = embedded != null ? embedded.target() : new DatabaseTarget(db, "postgres", "");
         try {
-            System.out.printf("fdnet bench logger: %,d events max, %d s max, batch %d, %d nodes, database %s%n",
-                    events, seconds, batch, nodes, target.url());
+            System.out.printf("fdnet bench logger: sustained %d s, batch %d growing to %d, %d nodes; latency at %,d/s for %d s;"
+                            + " burst %,d events, cache %d MB; database %s, fsync %s%n", seconds, batch, maxBatch, nodes,
+                    latencyRate, latencySeconds, burst, cacheMb, target.url(), show(target, "fsync"));
             LoggerConfig config = new LoggerConfig()
                     .set(LoggerSetting.DATABASE_EMBEDDED, "false").set(LoggerSetting.DATABASE_URL, target.url())
                     .set(LoggerSetting.DATABASE_USER, target.user())
                     .set(LoggerSetting.WRITER_BATCH_SIZE, Integer.toString(batch))
+                    .set(LoggerSetting.WRITER_MAX_BATCH_ROWS, Integer.toString(maxBatch))
                     .set(LoggerSetting.RECEIVER_PORT, "0").set(LoggerSetting.SENDER_PORT, "0")
-                    .set(LoggerSetting.MEMORY_CAPACITY_MB, "1536").set(LoggerSetting.PRIORITY_CRITICAL, "90");
+                    .set(LoggerSetting.MEMORY_CAPACITY_MB, Integer.toString(cacheMb));
+            Thread heap = heapSampler();
             try (NetworkStateLogger logger = new NetworkStateLogger(config)) {
                 logger.start();
-                SustainedResult sustained = sustained(logger, target);
-                double baseline = baseline(target, sustained.stored);
-                System.out.printf("baseline raw COPY: %,.0f rows/s (%,d rows, batches of %d sorted by (sourceid, time), "
-                        + "one commit each)%n", baseline, sustained.stored, batch);
-                System.out.printf("RATIO logger/raw COPY = %.2f sustained (%.2f over the whole run incl. warm-up; target >= 0.80)%n",
-                        sustained.rate / baseline, sustained.whole / baseline);
-                burstAndQuery(logger);
+                System.out.printf("writer: batch %d, timer %d ms, max %,d rows / %d MB; cache %d MB, critical %d%%, normal %d%%%n",
+                        batch, config.batchTimeoutMillis(), config.maxBatchRows(), config.maxBatchBytes() >> 20,
+                        cacheMb, config.criticalPercent(), config.normalPercent());
+                Sustained s = sustained(logger, target);
+                baselines(target, s);
+                latency(logger, config.batchTimeoutMillis());
+                burstAndQueries(logger, target);
+            } finally {
+                heap.interrupt();
             }
-            System.out.printf("peak heap (logger JVM): %,d MiB%n", peakHeap >> 20);
+            report.info("peak heap (logger JVM)", String.format("%,d MiB", peakHeap.get() >> 20));
+            report.printSummary();
             return 0;
         } finally {
             if (embedded != null) {
@@ -96,204 +121,201 @@ public final class BenchLoggerCommand implements Callable<Integer> {
         }
     }
 
-    private record SustainedResult(long stored, double rate, double whole) {
+    private record Sustained(long stored, double rate, int[] batchSizes) {
     }
 
-    private SustainedResult sustained(NetworkStateLogger logger, DatabaseTarget target) throws Exception {
-        List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx1g",
-                "-cp", System.getProperty("java.class.path"), BenchProducer.class.getName(), "127.0.0.1",
-                Integer.toString(logger.receiverPort()), Long.toString(events), Long.toString(seconds),
-                Integer.toString(nodes));
-        Process producer = new ProcessBuilder(cmd).redirectErrorStream(true).start();
-        List<String> output = new ArrayList<>();
-        Thread reader = new Thread(() -> {
-            try (BufferedReader r = new BufferedReader(new InputStreamReader(producer.getInputStream(), StandardCharsets.UTF_8))) {
-                String line;
-                while ((line = r.readLine()) != null) {
-                    synchronized (output) {
-                        output.add(line);
-                    }
+    /** Phase 1: one producer as fast as the logger takes its events. */
+    private Sustained sustained(NetworkStateLogger logger, DatabaseTarget target) throws Exception {
+        System.out.printf("%n[1] sustained: a producer process sends as fast as the logger takes (%d s) ...%n", seconds);
+        BatchSizes sizes = new BatchSizes();
+        AtomicLong firstCommit = new AtomicLong();
+        AtomicLong lastCommit = new AtomicLong();
+        logger.writer().observe(b -> {
+            long now = System.nanoTime();
+            firstCommit.compareAndSet(0, now);
+            lastCommit.set(now);
+            sizes.add(b.size());
+        });
+        ProducerProcess.Outcome out;
+        try (ProducerProcess producer = new ProducerProcess(logger.receiverPort(), events, seconds, nodes, 0, "sustained", false, 0)) {
+            while (producer.isAlive()) {
+                Thread.sleep(5000);
+                if (producer.isAlive()) {
+                    System.out.println("  ... " + logger.status().line());
                 }
-            } catch (java.io.IOException e) {
-                output.add("reader: " + e.getMessage());
+            }
+            out = producer.outcome();
+        }
+        logger.writer().observe(null);
+        long stored = count(target, "SELECT count(*) FROM datavalue_log");
+        double secs = (lastCommit.get() - firstCommit.get()) / 1e9;
+        double rate = stored / secs;
+        long lost = out.accepted() - nodes - stored;
+        System.out.printf("  %,d events stored in %.1f s (first to last commit) in %,d batches: mean %,.0f, largest %,d%n",
+                stored, secs, sizes.count(), sizes.mean(), sizes.largest());
+        report.check("[1] logger sustained, whole run", String.format("%,.0f events/s", rate), ">= 500,000 events/s",
+                rate >= 500_000);
+        report.check("[1] loss counted in the database", String.format("%,d (client accepted %,d values, stored %,d; client-side loss %d)",
+                lost, out.accepted() - nodes, stored, out.lost()), "0", lost == 0 && out.lost() == 0);
+        return new Sustained(stored, rate, sizes.toArray());
+    }
+
+    /** Phase 2: the same rows by raw COPY, with the writer's batch sizes and with 100,000-row batches. */
+    private void baselines(DatabaseTarget target, Sustained s) throws SQLException {
+        System.out.printf("%n[2] baselines: raw COPY of the same %,d rows, same table definition, one thread ...%n", s.stored);
+        RawCopyBaseline baseline = new RawCopyBaseline(target, nodes);
+        double raw = baseline.run(s.stored, s.batchSizes, RawCopyBaseline.Format.TEXT);
+        report.info("[2] raw COPY, the writer's batch sizes, whole run", String.format("%,.0f rows/s", raw));
+        report.check("[2] ratio logger / raw COPY (same rows, same batches, whole run each)",
+                String.format("%.2f", s.rate / raw), ">= 0.80", s.rate / raw >= 0.8);
+        if (compareBinary) {
+            double bin = baseline.run(s.stored, s.batchSizes, RawCopyBaseline.Format.BINARY);
+            report.info("[2] raw COPY in binary format, the writer's batch sizes", String.format("%,.0f rows/s (%.2f x text)",
+                    bin, bin / raw));
+        }
+        double keyed = baseline.run(s.stored, new int[] {100_000}, RawCopyBaseline.Format.TEXT);
+        report.info("[2] keyed-COPY limit: 100,000-row sorted batches", String.format("%,.0f rows/s (logger at %.2f of it)",
+                keyed, s.rate / keyed));
+    }
+
+    /** Phase 3: a moderate rate; for each event, from its time stamp in the core to the commit of its batch. */
+    private void latency(NetworkStateLogger logger, long timerMillis) throws Exception {
+        System.out.printf("%n[3] latency: a producer at %,d events/s for %d s ...%n", latencyRate, latencySeconds);
+        Histogram h = new Histogram(3_600_000_000L, 3);
+        logger.writer().observe(b -> {
+            long now = nowMicros();
+            for (CachedEvent e : b) {
+                h.recordValue(Math.max(0, now - e.time()));
             }
         });
-        reader.start();
-        EventCache cache = logger.cache();
-        long firstCommit = 0;
-        long lastChange = 0;
-        long lastCount = 0;
-        long nextReport = System.nanoTime() + 5_000_000_000L;
-        long warmNanos = 0;
-        long warmCount = 0;
-        while (producer.isAlive()) {
-            Thread.sleep(50);
-            if (System.nanoTime() > nextReport) {
-                nextReport += 5_000_000_000L;
-                var st = cache.status();
-                if (warmNanos == 0) {
-                    warmNanos = System.nanoTime();
-                    warmCount = st.committed();
-                }
-                System.out.printf("  ... received %,d, committed %,d, unwritten %,d, cache %.0f%%%s%n", st.received(),
-                        st.committed(), st.unwritten(), st.usedPercent(), st.pressured() ? " (pressured)" : "");
-            }
-            sampleHeap();
-            long c = cache.committedCount();
-            if (c > 0 && firstCommit == 0) {
-                firstCommit = System.nanoTime();
-            }
-            if (c != lastCount) {
-                lastCount = c;
-                lastChange = System.nanoTime();
-            }
+        long before = logger.cache().committedCount();
+        try (ProducerProcess producer = new ProducerProcess(logger.receiverPort(), latencyRate * latencySeconds,
+                latencySeconds + 30, nodes, latencyRate, "latency", false, 0)) {
+            producer.outcome();
         }
-        reader.join();
-        long accepted = -1;
-        long lost = -1;
-        for (String line : output) {
-            if (line.startsWith("accepted ")) {
-                String[] p = line.split(" ");
-                accepted = Long.parseLong(p[1]);
-                lost = Long.parseLong(p[3]);
-            }
-        }
-        if (producer.exitValue() != 0 || accepted < 0) {
-            throw new IllegalStateException("producer failed: " + String.join("\n", output));
-        }
-        long stored = count(target, "SELECT count(*) FROM datavalue_log");
-        long names = count(target, "SELECT count(*) FROM fdnet_node WHERE node IS NOT NULL");
-        double seconds = (lastChange - firstCommit) / 1e9;
-        double whole = stored / seconds;
-        double rate = warmNanos == 0 || lastChange <= warmNanos ? whole
-                : (lastCount - warmCount) / ((lastChange - warmNanos) / 1e9);
-        System.out.printf("logger: %,d events stored in %.1f s (first to last commit) = %,.0f events/s over the whole run;"
-                + " %,.0f events/s sustained after the first 5 s (JIT warm-up)%n", stored, seconds, whole, rate);
-        System.out.printf("loss counted in the database: accepted by the client %,d (values %,d + names %d), stored %,d + %d"
-                + " names -> %,d missing; client-side losses %d%n", accepted, accepted - nodes, nodes, stored, names,
-                accepted - stored - names, lost);
-        return new SustainedResult(stored, rate, whole);
+        logger.writer().observe(null);
+        long targetMicros = (timerMillis + 500) * 1000;
+        long p99 = h.getValueAtPercentile(99);
+        System.out.printf("  %,d events committed; event-to-commit p50 %,d us, p99 %,d us, max %,d us%n",
+                logger.cache().committedCount() - before, h.getValueAtPercentile(50), p99, h.getMaxValue());
+        report.check("[3] event-to-commit latency p99 at " + String.format("%,d", latencyRate) + " events/s",
+                String.format("%.1f ms", p99 / 1000.0), String.format("<= timer + 0.5 s = %,d ms", timerMillis + 500),
+                p99 <= targetMicros);
     }
 
-    private void sampleHeap() {
-        long used = ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed();
-        peakHeap = Math.max(peakHeap, used);
-    }
-
-    private double baseline(DatabaseTarget target, long rows) throws SQLException {
-        try (Connection c = target.open(); Statement s = c.createStatement()) {
-            s.execute("CREATE TABLE bench_baseline (LIKE datavalue_log INCLUDING ALL)");
-            c.setAutoCommit(false);
-            long t0 = System.nanoTime();
-            long time = System.currentTimeMillis() * 1000;
-            long[] keys = new long[batch];
-            StringBuilder sb = new StringBuilder(batch * 40);
-            for (long done = 0; done < rows; ) {
-                int n = (int) Math.min(batch, rows - done);
-                for (int i = 0; i < n; i++) {
-                    keys[i] = ((done + i) % nodes) << 40 | (i);
-                }
-                java.util.Arrays.sort(keys, 0, n);
-                sb.setLength(0);
-                for (int i = 0; i < n; i++) {
-                    long node = keys[i] >>> 40;
-                    long idx = keys[i] & ((1L << 40) - 1);
-                    sb.append(node + 1).append('\t').append(time + done + idx).append('\t')
-                            .append(Double.toString((done + idx) * 0.001)).append('\t').append(ValueType.DOUBLE.code()).append('\n');
-                }
-                byte[] bytes = sb.toString().getBytes(StandardCharsets.UTF_8);
-                CopyIn in = c.unwrap(PGConnection.class).getCopyAPI().copyIn("COPY bench_baseline (sourceid, time, value, typevalue) FROM STDIN");
-                in.writeToCopy(bytes, 0, bytes.length);
-                in.endCopy();
-                c.commit();
-                done += n;
-            }
-            double rate = rows / ((System.nanoTime() - t0) / 1e9);
-            c.setAutoCommit(true);
-            s.execute("DROP TABLE bench_baseline");
-            return rate;
-        }
-    }
-
-    private void burstAndQuery(NetworkStateLogger logger) throws Exception {
-        EventCache cache = logger.cache();
-        long maxByHeap = (Runtime.getRuntime().maxMemory() - (512L << 20)) / 300;
-        int n = (int) Math.min(burst, maxByHeap);
-        if (n < burst) {
-            System.out.printf("burst reduced to %,d events: the heap (%d MiB) is too small; use FDNET_JAVA_OPTS=-Xmx4g%n",
-                    n, Runtime.getRuntime().maxMemory() >> 20);
-        }
-        var directory = logger.directory();
-        RunProgress run = directory.openRun(UUID.randomUUID(), "bench-burst");
+    /** Phase 4: the burst through TCP; queries while the writer drains it and once it is idle. */
+    private void burstAndQueries(NetworkStateLogger logger, DatabaseTarget target) throws Exception {
         int burstNodes = 1000;
-        int[] ids = new int[burstNodes];
-        for (int i = 0; i < burstNodes; i++) {
-            ids[i] = directory.globalId(run, i);
-        }
-        long time = System.currentTimeMillis() * 1000;
-        List<CachedEvent> held = new ArrayList<>();
-        MonitorSubscriber monitor = held::add;
-        cache.subscribe(monitor, new int[] {ids[7]});
-        List<CachedEvent> chunk = new ArrayList<>(2048);
-        long committedBefore = cache.committedCount();
-        long t0 = System.nanoTime();
-        for (int i = 0; i < n; i++) {
-            DataValueEvent e = new DataValueEvent(ids[i % burstNodes], time + i, ValueType.DOUBLE, "0.5");
-            chunk.add(new CachedEvent(e, run, i + 1, cache.sizeOf(e), System.nanoTime()));
-            if (chunk.size() == 2048) {
-                cache.add(chunk);
-                chunk = new ArrayList<>(2048);
+        System.out.printf("%n[4] burst: %,d events of %d nodes from a producer process through TCP, cache %d MB ...%n",
+                burst, burstNodes, cacheMb);
+        EventCache cache = logger.cache();
+        SourceDirectory directory = logger.directory();
+        List<CachedEvent> held = new java.util.ArrayList<>();
+        MonitorSubscriber plot = held::add; // a viewer plotting the node: its events stay in memory after their commit
+        try (ProducerProcess producer = new ProducerProcess(logger.receiverPort(), burst, 3600, burstNodes, 0, "burst", true,
+                (int) Math.min(Integer.MAX_VALUE, burst + burstNodes + 1000));
+             ViewerClient viewer = new ViewerClient("127.0.0.1", logger.senderPort(), "bench-viewer", e -> { })) {
+            producer.awaitNamed(120_000);
+            List<org.fdnet.event.wire.LoggedNode> found = viewer.nodes("burst/Data" + QUERY_NODE);
+            int node = found.get(0).sourceId();
+            cache.subscribe(plot, new int[] {node});
+            long receivedBefore = cache.received();
+            long t0 = System.nanoTime();
+            producer.go();
+            while (cache.received() - receivedBefore < burst / 5 && producer.isAlive()) {
+                Thread.sleep(10);
             }
-        }
-        cache.add(chunk);
-        double seconds = (System.nanoTime() - t0) / 1e9;
-        sampleHeap();
-        System.out.printf("burst: %,d events into the cache in %.2f s = %,.0f events/s (target >= 1,000,000);"
-                + " the writer committed %,d meanwhile%n", n, seconds, n / seconds, cache.committedCount() - committedBefore);
-        // "The last 10 s of one node": the burst's times are one microsecond apart, so one node's last 10 s
-        // are the events of the last 10,000,000 us of the burst (all of them when the burst is shorter). A
-        // viewer monitors that node, as one plotting it would: its events stay in memory after their commit.
-        int node = ids[7];
-        long to = time + n;
-        long from = to - 10_000_000;
-        long deadline = System.nanoTime() + 120_000_000_000L;
-        queries("while the writer drains", cache, directory, node, from, to);
-        while (cache.unwrittenCount() > 0 && System.nanoTime() < deadline) {
-            Thread.sleep(100);
-        }
-        queries("after the drain, writer idle", cache, directory, node, from, to);
-        Histogram overTcp = new Histogram(3);
-        try (ViewerClient viewer = new ViewerClient("127.0.0.1", logger.senderPort(), "bench", e -> { })) {
-            int got = 0;
-            for (int i = 0; i < 500; i++) {
-                long q0 = System.nanoTime();
-                got = viewer.history(new int[] {node}, from, to).size();
-                overTcp.recordValue((System.nanoTime() - q0) / 1000);
+            LongSupplier now = BenchLoggerCommand::nowMicros;
+            inProcessQueries("while the writer drains", cache, directory, node, now, 1.0);
+            tcpQueries("while the writer drains", viewer, cache, node, now, 2.0);
+            long inNanos = 0;
+            while (producer.isAlive()) {
+                if (inNanos == 0 && cache.received() - receivedBefore >= burst) {
+                    inNanos = System.nanoTime() - t0;
+                }
+                Thread.sleep(10);
             }
-            System.out.printf("the same query through a ViewerClient over TCP, after the drain (%,d events decoded):"
-                    + " p50 %d us, p99 %d us%n", got, overTcp.getValueAtPercentile(50), overTcp.getValueAtPercentile(99));
+            ProducerProcess.Outcome out = producer.outcome();
+            long drainedNanos = System.nanoTime() - t0;
+            inNanos = inNanos == 0 ? drainedNanos : inNanos;
+            report.info("[4] burst taken in through TCP (receiver, back-pressure)", String.format("%,.0f events/s; all committed"
+                    + " after %.1f s = %,.0f events/s", burst / (inNanos / 1e9), drainedNanos / 1e9, burst / (drainedNanos / 1e9)));
+            long stored = count(target, "SELECT count(*) FROM datavalue_log WHERE sourceid IN (SELECT n.sourceid FROM fdnet_node n"
+                    + " JOIN fdnet_run r ON r.run_id = n.run_id WHERE r.core_name = 'bench-burst')");
+            long lost = out.accepted() - burstNodes - stored;
+            report.check("[4] burst loss counted in the database", String.format("%,d (accepted %,d, stored %,d)", lost,
+                    out.accepted() - burstNodes, stored), "0", lost == 0 && out.lost() == 0);
+            cache.received(); // a volatile read after the last offer: the held events are visible (the burst is over)
+            long newest = held.isEmpty() ? nowMicros() : held.get(held.size() - 1).time();
+            LongSupplier end = () -> newest; // idle: the last 10 s of the node's data, now over
+            inProcessQueries("writer idle", cache, directory, node, end, 1.0);
+            tcpQueries("writer idle", viewer, cache, node, end, 1.0);
+            cache.unsubscribe(plot, new int[] {node}, held);
         }
-        cache.unsubscribe(monitor, new int[] {node}, held);
-        sampleHeap();
-        System.out.println("stopping: the writer drains the burst into the database ...");
     }
 
-    private static void queries(String when, EventCache cache, SourceDirectory directory, int node, long from, long to) {
+    private void inProcessQueries(String when, EventCache cache, SourceDirectory directory, int node, LongSupplier end,
+                                  double targetMs) {
         Histogram h = new Histogram(3);
         long gcBefore = gcMillis();
+        long unwrittenBefore = cache.unwrittenCount();
         int found = 0;
-        boolean complete = true;
         for (int i = 0; i < 2000; i++) {
+            long to = end.getAsLong();
             long q0 = System.nanoTime();
-            EventCache.CacheAnswer a = cache.history(node, from, to, directory.seenFromStart(node));
+            EventCache.CacheAnswer a = cache.history(node, to - TEN_SECONDS_US, to, directory.seenFromStart(node));
             h.recordValue((System.nanoTime() - q0) / 1000);
             found = a.events().size();
-            complete &= a.complete();
         }
-        System.out.printf("viewer query, last 10 s of one monitored node from the cache (%,d events%s), 2,000 queries %s:"
-                        + " in-process p50 %d us, p99 %d us, max %d us (target p99 <= 1 ms); GC meanwhile %d ms%n", found,
-                complete ? ", cache complete" : ", CACHE INCOMPLETE", when, h.getValueAtPercentile(50),
-                h.getValueAtPercentile(99), h.getMaxValue(), gcMillis() - gcBefore);
+        queryFigure("in-process", when, h, found, unwrittenBefore, cache.unwrittenCount(), gcMillis() - gcBefore, targetMs);
+    }
+
+    private void tcpQueries(String when, ViewerClient viewer, EventCache cache, int node, LongSupplier end, double targetMs)
+            throws Exception {
+        Histogram h = new Histogram(3);
+        long gcBefore = gcMillis();
+        long unwrittenBefore = cache.unwrittenCount();
+        int found = 0;
+        for (int i = 0; i < 1000; i++) {
+            long to = end.getAsLong();
+            long q0 = System.nanoTime();
+            found = viewer.history(new int[] {node}, to - TEN_SECONDS_US, to).size();
+            h.recordValue((System.nanoTime() - q0) / 1000);
+        }
+        queryFigure("ViewerClient over TCP", when, h, found, unwrittenBefore, cache.unwrittenCount(), gcMillis() - gcBefore,
+                targetMs);
+    }
+
+    private void queryFigure(String how, String when, Histogram h, int found, long unwrittenBefore, long unwrittenAfter,
+                             long gc, double targetMs) {
+        System.out.printf("  query of the last 10 s of one monitored node (%,d events) %s, %s: unwritten %,d -> %,d,"
+                + " GC %d ms meanwhile%n", found, how, when, unwrittenBefore, unwrittenAfter, gc);
+        double p99 = h.getValueAtPercentile(99) / 1000.0;
+        report.check("[4] query " + how + ", " + when + ": p50 / p99 / max",
+                String.format("%.2f / %.2f / %.1f ms", h.getValueAtPercentile(50) / 1000.0, p99, h.getMaxValue() / 1000.0),
+                String.format("p99 <= %.0f ms", targetMs), p99 <= targetMs);
+    }
+
+    private Thread heapSampler() {
+        Thread t = new Thread(() -> {
+            while (!Thread.currentThread().isInterrupted()) {
+                long used = ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed();
+                peakHeap.accumulateAndGet(used, Math::max);
+                try {
+                    Thread.sleep(100);
+                } catch (InterruptedException e) {
+                    return;
+                }
+            }
+        }, "bench-heap-sampler");
+        t.setDaemon(true);
+        t.start();
+        return t;
+    }
+
+    private static long nowMicros() {
+        java.time.Instant now = java.time.Instant.now();
+        return now.getEpochSecond() * 1_000_000L + now.getNano() / 1_000L;
     }
 
     private static long gcMillis() {
@@ -302,6 +324,13 @@ public final class BenchLoggerCommand implements Callable<Integer> {
             total += Math.max(0, gc.getCollectionTime());
         }
         return total;
+    }
+
+    private static String show(DatabaseTarget target, String setting) throws SQLException {
+        try (Connection c = target.open(); Statement s = c.createStatement(); ResultSet rs = s.executeQuery("SHOW " + setting)) {
+            rs.next();
+            return rs.getString(1);
+        }
     }
 
     private static long count(DatabaseTarget target, String sql) throws SQLException {

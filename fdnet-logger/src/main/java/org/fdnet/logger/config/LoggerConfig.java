@@ -61,7 +61,7 @@ public final class LoggerConfig {
 
     private static void validate(LoggerSetting s, String v) {
         switch (s) {
-            case DATABASE_EMBEDDED, WRITER_RECONNECT, PRIORITY_ENABLED -> {
+            case DATABASE_EMBEDDED, DATABASE_FSYNC, WRITER_RECONNECT, PRIORITY_ENABLED -> {
                 if (!v.equals("true") && !v.equals("false")) {
                     throw new IllegalArgumentException(s.key() + " must be true or false, was '" + v + "'");
                 }
@@ -81,6 +81,8 @@ public final class LoggerConfig {
             case WRITER_DELAY -> range(s, v, 0, 3_600_000);
             case WRITER_BATCH_SIZE -> range(s, v, 1, 1_000_000);
             case WRITER_BATCH_TIMEOUT -> range(s, v, 1, 3_600_000);
+            case WRITER_MAX_BATCH_ROWS -> range(s, v, 1, 10_000_000);
+            case WRITER_MAX_BATCH_BYTES -> range(s, v, 1, 4096);
             case WRITER_RECONNECT_ATTEMPTS -> range(s, v, 1, 1_000_000);
             case WRITER_RECONNECT_DELAY -> range(s, v, 0, 3_600_000);
             case RECEIVER_MAX_CLIENTS, SENDER_MAX_CLIENTS -> range(s, v, 1, 10_000);
@@ -156,6 +158,18 @@ public final class LoggerConfig {
 
     public int batchSize() {
         return (int) number(LoggerSetting.WRITER_BATCH_SIZE);
+    }
+
+    public boolean embeddedFsync() {
+        return Boolean.parseBoolean(get(LoggerSetting.DATABASE_FSYNC));
+    }
+
+    public int maxBatchRows() {
+        return (int) number(LoggerSetting.WRITER_MAX_BATCH_ROWS);
+    }
+
+    public long maxBatchBytes() {
+        return number(LoggerSetting.WRITER_MAX_BATCH_BYTES) << 20;
     }
 
     public long batchTimeoutMillis() {

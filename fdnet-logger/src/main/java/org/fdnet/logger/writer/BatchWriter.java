@@ -17,7 +17,8 @@ import org.slf4j.LoggerFactory;
 /**
  * The writer thread (thesis, chapter 4 VII B–C): empties the cache into the database in batches — when
  * {@code batchSize} events are ready, or when the timer ({@code batchTimeoutMillis}) runs out with fewer —
- * each batch in one COPY transaction; events leave the cache only after the commit. At the cache's critical
+ * each batch in one COPY transaction; when more are waiting, the batch takes more of them (growing with the
+ * backlog up to {@code writer.maxBatchRows} / {@code writer.maxBatchMegabytes}, see {@link BatchSizer}); events leave the cache only after the commit. At the cache's critical
  * level, or when a viewer asks for a flush, it writes back to back (and, if enabled, at maximum thread
  * priority) until the normal level.
  *
@@ -40,6 +41,9 @@ public final class BatchWriter implements Runnable {
     private volatile boolean drainOnStop = true;
     private volatile String databaseState = "connecting";
     private volatile long batches;
+    private volatile int lastBatchRows;
+    private volatile BatchObserver observer;
+    private final BatchSizer sizer;
     private Connection connection;
 
     public BatchWriter(WriterSettings settings, EventCache cache, EventStore store, SourceDirectory directory,
@@ -49,6 +53,22 @@ public final class BatchWriter implements Runnable {
         this.store = store;
         this.directory = directory;
         this.onGiveUp = onGiveUp;
+        this.sizer = new BatchSizer(settings.batchSize(), settings.maxBatchRows());
+    }
+
+    /** Events in the last batch taken (it grows with the backlog, see {@link BatchSizer}). */
+    public int lastBatchRows() {
+        return lastBatchRows;
+    }
+
+    /** Sets (or with null removes) the one observer told of each committed batch. */
+    public void observe(BatchObserver observer) {
+        this.observer = observer;
+    }
+
+    /** The most events one batch may take ({@code writer.maxBatchRows}, at least the batch size). */
+    public int maxBatchRows() {
+        return sizer.maxRows();
     }
 
     /** "connected", or since when and how often the database failed. */
@@ -112,8 +132,16 @@ public final class BatchWriter implements Runnable {
                 int ready = cache.awaitUnwritten(settings.batchSize(), delay, urgent ? 0 : Math.max(0, timerLeft));
                 boolean timerExpired = System.nanoTime() - timerStart >= TimeUnit.MILLISECONDS.toNanos(settings.batchTimeoutMillis());
                 if (ready >= settings.batchSize() || (ready > 0 && (timerExpired || urgent))) {
-                    if (!write(cache.takeBatch(ready))) {
+                    int backlog = delay == 0 ? cache.unwrittenCount() : cache.readyUnwritten(sizer.maxRows(), delay);
+                    List<CachedEvent> batch = cache.takeBatch(Math.max(ready, Math.min(backlog, sizer.next(backlog))),
+                            settings.maxBatchBytes());
+                    lastBatchRows = batch.size();
+                    if (!write(batch)) {
                         break;
+                    }
+                    BatchObserver o = observer;
+                    if (o != null) {
+                        o.committed(batch);
                     }
                     timerStart = System.nanoTime();
                 } else if (timerExpired) {

@@ -1,0 +1,97 @@
+package org.fdnet.logger.writer;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.UUID;
+import java.util.concurrent.TimeUnit;
+import org.fdnet.event.DataValueEvent;
+import org.fdnet.event.ValueType;
+import org.fdnet.logger.NetworkStateLogger;
+import org.fdnet.logger.PostgresPerClass;
+import org.fdnet.logger.cache.CachedEvent;
+import org.fdnet.logger.cache.EventCache;
+import org.fdnet.logger.cache.RunProgress;
+import org.fdnet.logger.config.LoggerSetting;
+import org.fdnet.logger.store.SourceDirectory;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
+
+/** The writer grows its batches with a backlog, keeps exactly-once and shrinks back when caught up. */
+@Timeout(value = 120, unit = TimeUnit.SECONDS)
+class BatchGrowthTest {
+    @RegisterExtension
+    static final PostgresPerClass database = new PostgresPerClass();
+
+    @Test
+    void shouldWriteABacklogInGrowingBatchesExactlyOnceAndShrinkBackWhenCaughtUp() throws Exception {
+        var config = database.fixture().loggerConfig().set(LoggerSetting.WRITER_BATCH_SIZE, "100")
+                .set(LoggerSetting.WRITER_MAX_BATCH_ROWS, "5000");
+        try (NetworkStateLogger logger = new NetworkStateLogger(config)) {
+            logger.start();
+            EventCache cache = logger.cache();
+            SourceDirectory directory = logger.directory();
+            RunProgress run = directory.openRun(UUID.randomUUID(), "backlog-core");
+            int[] ids = new int[10];
+            for (int i = 0; i < ids.length; i++) {
+                ids[i] = directory.globalId(run, i);
+            }
+            long batchesBefore = logger.writer().batches();
+            cache.add(events(cache, run, ids, 0, 20_000));
+            awaitCommitted(cache, 20_000);
+
+            long backlogBatches = logger.writer().batches() - batchesBefore;
+            // Batches of 100 would take 200; growing 100, 200, ... up to 5,000 takes a handful.
+            assertThat(backlogBatches).isLessThan(50);
+            String ofRun = " FROM datavalue_log WHERE sourceid IN (SELECT sourceid FROM fdnet_node WHERE run_id = "
+                    + run.runId() + ")";
+            assertThat(database.fixture().count("SELECT count(*)" + ofRun)).isEqualTo(20_000);
+            assertThat(database.fixture().count("SELECT count(DISTINCT (sourceid, time))" + ofRun)).isEqualTo(20_000);
+            assertThat(database.fixture().count("SELECT committed_seq FROM fdnet_run WHERE run_id = " + run.runId()))
+                    .isEqualTo(20_000);
+
+            cache.add(events(cache, run, ids, 20_000, 30));
+            awaitCommitted(cache, 20_030);
+            assertThat(logger.writer().lastBatchRows()).isEqualTo(30);
+            assertThat(logger.status().line()).contains("batch 30 (max 5,000)");
+            assertThat(database.fixture().count("SELECT committed_seq FROM fdnet_run WHERE run_id = " + run.runId()))
+                    .isEqualTo(20_030);
+        }
+    }
+
+    @Test
+    void shouldCapABatchAtTheConfiguredBytes() throws Exception {
+        // 1 MB at 167 + 3 bytes per event: at most 6,168 events per batch, whatever the row maximum.
+        var config = database.fixture().loggerConfig().set(LoggerSetting.WRITER_BATCH_SIZE, "1000")
+                .set(LoggerSetting.WRITER_MAX_BATCH_ROWS, "1000000").set(LoggerSetting.WRITER_MAX_BATCH_BYTES, "1");
+        try (NetworkStateLogger logger = new NetworkStateLogger(config)) {
+            logger.start();
+            EventCache cache = logger.cache();
+            RunProgress run = logger.directory().openRun(UUID.randomUUID(), "bytes-core");
+            int[] ids = {logger.directory().globalId(run, 0)};
+            long before = logger.writer().batches();
+            cache.add(events(cache, run, ids, 0, 50_000));
+            awaitCommitted(cache, 50_000);
+            assertThat(logger.writer().batches() - before).isGreaterThanOrEqualTo(50_000 / 6_168);
+            assertThat(database.fixture().count("SELECT count(*) FROM datavalue_log WHERE sourceid = " + ids[0]))
+                    .isEqualTo(50_000);
+        }
+    }
+
+    private static List<CachedEvent> events(EventCache cache, RunProgress run, int[] ids, int first, int n) {
+        List<CachedEvent> out = new ArrayList<>(n);
+        for (int i = first; i < first + n; i++) {
+            DataValueEvent e = new DataValueEvent(ids[i % ids.length], 1_000_000L + i, ValueType.DOUBLE, "0.5");
+            out.add(new CachedEvent(e, run, i + 1, cache.sizeOf(e), System.nanoTime()));
+        }
+        return out;
+    }
+
+    private static void awaitCommitted(EventCache cache, long count) throws InterruptedException {
+        while (cache.committedCount() < count) {
+            Thread.sleep(10);
+        }
+    }
+}

@@ -53,9 +53,6 @@ public interface NetworkEditor {
 
     EditResult deleteConnection(String module, ConnectionInfo connection);
 
-    /** Changes a Reader or Writer (its name, exist flag or ends) in place, as one step. */
-    EditResult updateConnection(String module, ConnectionInfo connection, ConnectionInfo updated);
-
     /** The outcome of one edit: the node it produced where there is one, or the reason it was refused. */
     record EditResult(boolean accepted, NodeRef node, String reason) {
         public static EditResult ok() {

@@ -185,7 +185,10 @@ public final class UndoableNetworkEditor implements NetworkEditor {
         return apply("Delete " + connection, ConnectionEdits.delete(module, connection), null);
     }
 
-    @Override
+    /**
+     * Changes a Reader or Writer (its name, exist flag or ends) in place, as one step. Not on
+     * {@link NetworkEditor}: only the graphic panel edits connections this way.
+     */
     public EditResult updateConnection(String module, ConnectionInfo connection, ConnectionInfo updated) {
         return apply("Change " + connection, target -> {
             int position = network().module(module) == null ? -1 : network().module(module).connections().indexOf(connection);

@@ -1,0 +1,105 @@
+package org.fdnet.hi.cli;
+
+import java.awt.GraphicsEnvironment;
+import java.nio.file.Path;
+import java.util.Set;
+import java.util.concurrent.Callable;
+import javax.swing.SwingUtilities;
+import org.fdnet.hi.app.HiApplication;
+import org.fdnet.hi.app.HiWindow;
+import org.fdnet.hi.app.RecentFiles;
+import org.fdnet.hi.app.WindowScreenshot;
+import org.fdnet.hi.graph.GraphScene;
+import org.fdnet.netinfo.NodeRef;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code fdnet hi [FILE]}: the graphical and text-based network editor. */
+@Command(name = "hi", mixinStandardHelpOptions = true,
+        description = {"The Human Interface: edit a network graphically and in text frames (Swing).",
+            "A file with problems opens read-only with its problem list.",
+            "With --screenshot, renders the window to a PNG and exits (needs a display, e.g. xvfb-run)."})
+public final class HiCommand implements Callable<Integer> {
+    @Parameters(arity = "0..1", paramLabel = "FILE", description = "the .fdn network to open")
+    Path file;
+
+    @Option(names = "--screenshot", paramLabel = "PNG", description = "render the window to this PNG and exit")
+    Path screenshot;
+
+    @Option(names = "--size", paramLabel = "WxH", defaultValue = "1280x800", description = "window size (default 1280x800)")
+    String size;
+
+    @Option(names = "--select", paramLabel = "MODULE/NODE", description = "select this node (shown in the information panel)")
+    String select;
+
+    @Option(names = "--highlight", paramLabel = "WHICH", description = "highlight the selected node's ANCESTORS, DESCENDANTS or BOTH")
+    GraphScene.Relatives highlight;
+
+    @Option(names = "--hide", paramLabel = "MODULE", split = ",", description = "modules to hide")
+    String[] hide = new String[0];
+
+    @Option(names = "--find", paramLabel = "TEXT", description = "search for TEXT as Ctrl-F does")
+    String find;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() throws Exception {
+        if (GraphicsEnvironment.isHeadless()) {
+            spec.commandLine().getErr().println("fdnet hi: no display (DISPLAY is not set); run it under X, or xvfb-run for --screenshot");
+            return 2;
+        }
+        HiWindow window = HiApplication.start(file, RecentFiles.forUser());
+        SwingUtilities.invokeAndWait(() -> prepare(window));
+        if (screenshot == null) {
+            HiApplication.awaitClosed(window);
+            return 0;
+        }
+        Thread.sleep(400);
+        SwingUtilities.invokeAndWait(() -> { });
+        Exception[] failure = new Exception[1];
+        SwingUtilities.invokeAndWait(() -> {
+            try {
+                WindowScreenshot.write(window, screenshot);
+            } catch (Exception e) {
+                failure[0] = e;
+            }
+            window.dispose();
+        });
+        if (failure[0] != null) {
+            spec.commandLine().getErr().println("fdnet hi: cannot write " + screenshot + ": " + failure[0].getMessage());
+            return 1;
+        }
+        spec.commandLine().getOut().println("wrote " + screenshot);
+        return 0;
+    }
+
+    private void prepare(HiWindow window) {
+        String[] wh = size.split("x");
+        window.setSize(Integer.parseInt(wh[0]), Integer.parseInt(wh[1]));
+        window.validate();
+        if (window.current() == null) {
+            return;
+        }
+        GraphScene scene = window.current().scene();
+        for (String module : hide) {
+            scene.setModuleVisible(module, false);
+        }
+        if (select != null) {
+            NodeRef ref = NodeRef.parse(select, "main");
+            scene.select(Set.of(ref));
+            if (highlight != null) {
+                scene.highlight(ref, highlight);
+            }
+        }
+        window.canvas().fit();
+        if (find != null) {
+            window.search().open();
+            window.search().search(find);
+        }
+    }
+}

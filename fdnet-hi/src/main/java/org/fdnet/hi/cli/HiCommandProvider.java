@@ -12,6 +12,6 @@ public final class HiCommandProvider implements CommandProvider {
 
     @Override
     public List<Object> benchmarks() {
-        return List.of();
+        return List.of(new BenchHiCommand());
     }
 }

@@ -114,7 +114,7 @@ public final class GraphCanvas extends JComponent implements SceneListener {
             AffineTransform t = transform();
             g.transform(t);
             Rectangle2D modelClip = clip == null ? null : inverse(t).createTransformedShape(clip).getBounds2D();
-            painter.paint(new Java2DSketch(g), modelClip);
+            painter.paint(new Java2DSketch(g, zoom >= GraphPainter.LABEL_SCALE), modelClip, zoom);
             if (rubberBand != null) {
                 g.setColor(new Color(0x1F6FEB));
                 g.setStroke(new BasicStroke((float) (1 / zoom)));

@@ -23,14 +23,28 @@ public final class GraphPainter {
     private static final Color HIGHLIGHT = new Color(0xF0A020);
     private static final Color TEXT = new Color(0x1E2430);
 
+    /** Names are 12 model units high: below this scale they would be under 5 pixels. */
+    static final double LABEL_SCALE = 0.42;
+
     private final GraphScene scene;
+    private boolean labels = true;
 
     public GraphPainter(GraphScene scene) {
         this.scene = scene;
     }
 
-    /** Paints what lies in {@code clip} (model coordinates; {@code null}: everything). */
+    /** Paints everything at full detail (exports). */
     public void paint(Sketch sketch, Rectangle2D clip) {
+        paint(sketch, clip, 1);
+    }
+
+    /**
+     * Paints what lies in {@code clip} (model coordinates; {@code null}: everything) at {@code scale} screen
+     * pixels per model unit. Below {@link #LABEL_SCALE} names would be unreadably small and are left out,
+     * which keeps a zoomed-out 1,000-node drawing fluid.
+     */
+    public void paint(Sketch sketch, Rectangle2D clip, double scale) {
+        labels = scale >= LABEL_SCALE;
         Set<NodeRef> lit = scene.highlighted();
         boolean fading = !lit.isEmpty();
         for (ConnectionRef c : scene.visibleConnections()) {
@@ -58,7 +72,7 @@ public final class GraphPainter {
         float width = selected ? 3f : 1.6f;
         sketch.stroke(s, colour, width, !info.exists());
         sketch.fill(arrowHead(s, selected ? 14 : 11), colour);
-        if (info.name() != null) {
+        if (labels && info.name() != null) {
             sketch.text(info.name(), (s.getX1() + s.getX2()) / 2, (s.getY1() + s.getY2()) / 2 - 9, colour, false);
         }
     }
@@ -74,6 +88,9 @@ public final class GraphPainter {
             sketch.stroke(outline, HIGHLIGHT, ref.equals(scene.highlightRoot()) ? 4f : 2.5f, false);
         } else {
             sketch.stroke(outline, faded ? fade(module) : module, 2f, false);
+        }
+        if (!labels) {
+            return;
         }
         Color text = luminance(scene.fillColour(ref)) < 0.5 ? Color.WHITE : TEXT;
         sketch.text(ref.node(), b.getCenterX(), b.getCenterY(), faded ? fade(text) : text,

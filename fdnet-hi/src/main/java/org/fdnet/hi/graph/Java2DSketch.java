@@ -14,11 +14,20 @@ public final class Java2DSketch implements Sketch {
     static final Font BOLD = PLAIN.deriveFont(Font.BOLD);
     private static final float[] DASH = {6f, 4f};
 
+    /** Strokes by width (negative: dashed); a drawing uses a handful. */
+    private static final java.util.Map<Float, BasicStroke> STROKES = new java.util.concurrent.ConcurrentHashMap<>();
+
     private final Graphics2D g;
 
     public Java2DSketch(Graphics2D g) {
+        this(g, true);
+    }
+
+    /** {@code smooth} false: no antialiasing, for zoomed-out views of large drawings where it costs most. */
+    public Java2DSketch(Graphics2D g, boolean smooth) {
         this.g = g;
-        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, smooth ? RenderingHints.VALUE_ANTIALIAS_ON
+                : RenderingHints.VALUE_ANTIALIAS_OFF);
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
     }
 
@@ -31,8 +40,9 @@ public final class Java2DSketch implements Sketch {
     @Override
     public void stroke(Shape shape, Color colour, float width, boolean dashed) {
         g.setColor(colour);
-        g.setStroke(dashed ? new BasicStroke(width, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f, DASH, 0f)
-                : new BasicStroke(width, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.setStroke(STROKES.computeIfAbsent(dashed ? -width : width, w -> w < 0
+                ? new BasicStroke(-w, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f, DASH, 0f)
+                : new BasicStroke(w, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND)));
         g.draw(shape);
     }
 

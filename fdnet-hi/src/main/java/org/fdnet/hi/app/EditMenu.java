@@ -172,6 +172,7 @@ final class EditMenu {
             return;
         }
         MergeChoice choice = MergeChoice.ask(window, two.get(0), two.get(1));
+        window.canvas().requestFocus();
         if (choice == null) {
             return;
         }

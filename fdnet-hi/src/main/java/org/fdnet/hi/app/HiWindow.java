@@ -108,6 +108,7 @@ public final class HiWindow extends JFrame {
         canvas = new GraphCanvas(network.scene());
         search = new SearchBar(network.scene(), canvas);
         NodeInfoPanel info = new NodeInfoPanel(network.scene(), network.editor());
+        info.reportTo(status);
         network.editor().addEditorListener(new EditorListener() {
             @Override
             public void historyChanged() {

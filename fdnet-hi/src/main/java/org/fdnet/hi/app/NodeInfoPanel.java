@@ -26,7 +26,8 @@ import org.fdnet.netinfo.Parameter;
 
 /**
  * The node information panel: what the clicked node is (module, name, kind, host, path, class,
- * parameters), or the clicked Reader/Writer, whose name and exist flag can be changed here (Apply).
+ * parameters), or the clicked Reader/Writer. Host, path, class and parameter values of a node, and the
+ * name and exist flag of a Reader/Writer, can be changed here (Apply: one undoable edit).
  */
 public final class NodeInfoPanel extends JPanel implements SceneListener {
     private final GraphScene scene;
@@ -34,15 +35,18 @@ public final class NodeInfoPanel extends JPanel implements SceneListener {
     private final JLabel title = new JLabel("Nothing selected");
     private final JTextField module = readOnly("info.module");
     private final JTextField name = readOnly("info.name");
-    private final JTextField host = readOnly("info.host");
-    private final JTextField path = readOnly("info.path");
-    private final JTextField className = readOnly("info.class");
+    private final JTextField host = editable("info.host");
+    private final JTextField path = editable("info.path");
+    private final JTextField className = editable("info.class");
     private final DefaultTableModel parameters = new DefaultTableModel(new String[] {"Name", "Type", "Value"}, 0) {
         @Override
         public boolean isCellEditable(int row, int column) {
-            return false;
+            return column == 2;
         }
     };
+    private final JButton applyNode = new JButton("Apply");
+    private StatusBar status;
+    private JTable paramTable;
     private final JTextField connectionName = new JTextField();
     private final JCheckBox exists = new JCheckBox("made at start (exist)");
     private final JButton apply = new JButton("Apply");
@@ -61,6 +65,8 @@ public final class NodeInfoPanel extends JPanel implements SceneListener {
         connectionName.setName("info.connectionName");
         apply.setName("info.apply");
         apply.addActionListener(e -> applyConnection());
+        applyNode.setName("info.applyNode");
+        applyNode.addActionListener(e -> applyNode());
         scene.addListener(this);
         selectionChanged();
     }
@@ -104,11 +110,45 @@ public final class NodeInfoPanel extends JPanel implements SceneListener {
         addRow("Class", className);
         JTable table = new JTable(parameters);
         table.setName("info.parameters");
+        table.putClientProperty("terminateEditOnFocusLost", Boolean.TRUE);
+        paramTable = table;
         JScrollPane scroll = new JScrollPane(table);
         scroll.setPreferredSize(new java.awt.Dimension(260, 160));
         addWide(new JLabel("Parameters"));
         addWide(scroll);
+        addWide(applyNode);
         filler();
+    }
+
+    /** Where a value that does not fit its type is reported. */
+    public void reportTo(StatusBar bar) {
+        status = bar;
+    }
+
+    /** Host, path, class and parameter values as typed, as one undoable update of the node. */
+    private void applyNode() {
+        if (scene.selection().size() != 1) {
+            return;
+        }
+        if (paramTable != null && paramTable.isEditing()) {
+            paramTable.getCellEditor().stopCellEditing();
+        }
+        NodeRef ref = scene.selection().iterator().next();
+        NodeInfo node = scene.network().node(ref);
+        java.util.List<Parameter> values = new java.util.ArrayList<>();
+        try {
+            for (int i = 0; i < node.parameters().size(); i++) {
+                Parameter p = node.parameters().get(i);
+                values.add(new Parameter(p.name(), p.type(), String.valueOf(parameters.getValueAt(i, 2))));
+            }
+        } catch (IllegalArgumentException e) {
+            if (status != null) {
+                status.error("Refused: " + e.getMessage());
+            }
+            return;
+        }
+        editor.updateNode(ref, new NodeInfo(node.kind(), node.name(), host.getText().trim(), path.getText().trim(),
+                className.getText().trim(), values));
     }
 
     private void showConnection(ConnectionRef c) {
@@ -162,6 +202,12 @@ public final class NodeInfoPanel extends JPanel implements SceneListener {
     private static JTextField readOnly(String name) {
         JTextField f = new JTextField();
         f.setEditable(false);
+        f.setName(name);
+        return f;
+    }
+
+    private static JTextField editable(String name) {
+        JTextField f = new JTextField();
         f.setName(name);
         return f;
     }

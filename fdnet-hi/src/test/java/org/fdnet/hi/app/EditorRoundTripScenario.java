@@ -1,0 +1,245 @@
+package org.fdnet.hi.app;
+
+import java.awt.Component;
+import java.awt.Container;
+import java.awt.Point;
+import java.awt.Robot;
+import java.awt.Window;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.awt.geom.Point2D;
+import java.awt.geom.Rectangle2D;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
+import java.util.prefs.Preferences;
+import javax.swing.AbstractButton;
+import javax.swing.JDialog;
+import javax.swing.JTextField;
+import javax.swing.SwingUtilities;
+import org.fdnet.hi.graph.GraphScene;
+import org.fdnet.layout.NetworkLayout;
+import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.netinfo.NodeRef;
+import org.fdnet.netinfo.xml.LayoutRepository;
+import org.fdnet.netinfo.xml.NetworkRepository;
+
+/**
+ * The editor driven like a user on a real display (run in a child JVM by {@link EditorWindowGuiTest}):
+ * open roq-motion.fdn, see it laid out, select and drag with the mouse, delete with the keyboard and undo,
+ * edit a node's host in the text fields, merge two nodes through the dialog, undo the merge, save with
+ * Ctrl-S, reopen, and compare. Prints "SCENARIO PASSED" and exits 0, or prints what failed and exits 1.
+ */
+public final class EditorRoundTripScenario {
+    private static final NodeRef JUDGE = new NodeRef("Integration", "judge");
+    private static final NodeRef BALANCE = new NodeRef("Balance", "balance candidate");
+    private static final NodeRef WALK = new NodeRef("Walk", "walk candidate");
+
+    private final HiWindow window;
+    private final Robot robot;
+
+    private EditorRoundTripScenario(HiWindow window) throws Exception {
+        this.window = window;
+        this.robot = new Robot();
+        robot.setAutoDelay(30);
+    }
+
+    public static void main(String[] args) throws Exception {
+        Path file = Path.of(args[0]);
+        Preferences prefs = Preferences.userRoot().node("org/fdnet/hi/test/" + ProcessHandle.current().pid());
+        int code = 1;
+        try {
+            HiWindow window = HiApplication.start(file, new RecentFiles(prefs));
+            new EditorRoundTripScenario(window).run(file);
+            System.out.println("SCENARIO PASSED");
+            code = 0;
+        } catch (Throwable t) {
+            System.out.println("SCENARIO FAILED: " + t);
+            for (StackTraceElement e : t.getStackTrace()) {
+                System.out.println("    at " + e);
+            }
+        } finally {
+            prefs.removeNode();
+        }
+        System.exit(code);
+    }
+
+    private void run(Path file) throws Exception {
+        NetworkInfo original = NetworkRepository.load(file);
+        waitFor("the window is shown", () -> window.isShowing() && window.canvas().getWidth() > 0);
+        robot.waitForIdle();
+        GraphScene scene = edt(() -> window.current().scene());
+        check(edt(() -> scene.visibleNodes().stream().allMatch(r -> scene.bounds(r) != null)), "every node has a place");
+
+        // Graphic view: click selects and fills the information panel; drag moves the node.
+        click(JUDGE, 0);
+        waitFor("judge selected", () -> scene.selection().equals(java.util.Set.of(JUDGE)));
+        check(edt(() -> field("info.class").getText()).equals(original.node(JUDGE).className()), "the panel shows judge's class");
+        Rectangle2D before = edt(() -> scene.bounds(JUDGE));
+        drag(JUDGE, 80, 40);
+        Rectangle2D after = edt(() -> scene.bounds(JUDGE));
+        check(after.getX() > before.getX() + 20 && after.getY() > before.getY() + 10, "dragging moved judge: " + before + " -> " + after);
+
+        // Graphic view: Delete removes the selected node and its connections; Ctrl-Z gives them back.
+        click(WALK, 0);
+        key(KeyEvent.VK_DELETE, 0);
+        waitFor("walk candidate deleted", () -> window.current().editor().network().node(WALK) == null);
+        key(KeyEvent.VK_Z, InputEvent.CTRL_DOWN_MASK);
+        waitFor("walk candidate back", () -> window.current().editor().network().node(WALK) != null);
+        check(edt(() -> window.current().editor().network().equals(original)), "undoing the delete gives the network back");
+
+        // Text fields: judge's host changed through the information panel.
+        click(JUDGE, 0);
+        SwingUtilities.invokeAndWait(() -> {
+            field("info.host").setText("robot-2");
+            button("info.applyNode").doClick();
+        });
+        waitFor("judge's host changed", () -> "robot-2".equals(window.current().editor().network().node(JUDGE).host()));
+        NetworkInfo edited = edt(() -> window.current().editor().network().copy());
+
+        // Merge two nodes through the dialog (click the first, Ctrl-click the second, Ctrl-M), then undo it.
+        click(BALANCE, 0);
+        click(WALK, InputEvent.CTRL_DOWN_MASK);
+        waitFor("two nodes selected", () -> scene.selection().size() == 2);
+        key(KeyEvent.VK_M, InputEvent.CTRL_DOWN_MASK);
+        AtomicReference<JDialog> dialog = new AtomicReference<>();
+        waitFor("the merge dialog", () -> {
+            for (Window w : Window.getWindows()) {
+                if (w instanceof JDialog d && d.isShowing()) {
+                    dialog.set(d);
+                    return true;
+                }
+            }
+            return false;
+        });
+        SwingUtilities.invokeAndWait(() -> find(dialog.get(), AbstractButton.class, "Merge, keep both").doClick());
+        waitFor("merged", () -> window.current().editor().network().node(WALK) == null);
+        check(edt(() -> window.current().editor().network().connectionsOf(WALK).isEmpty()), "no connection names the merged node");
+        key(KeyEvent.VK_Z, InputEvent.CTRL_DOWN_MASK);
+        waitFor("merge undone", () -> window.current().editor().network().node(WALK) != null);
+        check(edt(() -> window.current().editor().network().equals(edited)), "undoing the merge gives the edited network back");
+
+        // Save with Ctrl-S; reopen the file and find the same network and the same layout.
+        key(KeyEvent.VK_S, InputEvent.CTRL_DOWN_MASK);
+        waitFor("saved", () -> !window.current().unsaved());
+        NetworkLayout savedLayout = edt(() -> window.current().savedLayout());
+        SwingUtilities.invokeAndWait(() -> window.open(file));
+        check(edt(() -> window.current().editor().network().equals(edited)), "the reopened network is the edited one");
+        check(NetworkRepository.load(file).equals(edited), "the file holds the edited network");
+        check(LayoutRepository.load(LayoutRepository.sideFileOf(file)).equals(savedLayout), "the .fdg holds the layout as shown");
+        check(edt(() -> window.current().scene().bounds(JUDGE)).equals(after), "judge is where it was dragged");
+        SwingUtilities.invokeAndWait(window::dispose);
+    }
+
+    // ---------------------------------------------------------------- driving
+
+    private Point onScreen(NodeRef ref) throws Exception {
+        return edt(() -> {
+            Rectangle2D b = window.current().scene().bounds(ref);
+            Point2D p = window.canvas().transform().transform(new Point2D.Double(b.getCenterX(), b.getCenterY()), null);
+            Point origin = window.canvas().getLocationOnScreen();
+            return new Point(origin.x + (int) p.getX(), origin.y + (int) p.getY());
+        });
+    }
+
+    private void click(NodeRef ref, int modifiers) throws Exception {
+        Point p = onScreen(ref);
+        robot.mouseMove(p.x, p.y);
+        press(modifiers, true);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        press(modifiers, false);
+        robot.waitForIdle();
+    }
+
+    private void drag(NodeRef ref, int dx, int dy) throws Exception {
+        Point p = onScreen(ref);
+        robot.mouseMove(p.x, p.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        for (int i = 1; i <= 10; i++) {
+            robot.mouseMove(p.x + dx * i / 10, p.y + dy * i / 10);
+        }
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        robot.waitForIdle();
+    }
+
+    private void key(int code, int modifiers) {
+        press(modifiers, true);
+        robot.keyPress(code);
+        robot.keyRelease(code);
+        press(modifiers, false);
+        robot.waitForIdle();
+    }
+
+    private void press(int modifiers, boolean down) {
+        if ((modifiers & InputEvent.CTRL_DOWN_MASK) != 0) {
+            if (down) {
+                robot.keyPress(KeyEvent.VK_CONTROL);
+            } else {
+                robot.keyRelease(KeyEvent.VK_CONTROL);
+            }
+        }
+    }
+
+    private JTextField field(String name) {
+        return find(window, JTextField.class, name);
+    }
+
+    private AbstractButton button(String name) {
+        return find(window, AbstractButton.class, name);
+    }
+
+    /** The showing component of that type whose name (or, for buttons, text) is {@code key}. */
+    private static <T extends Component> T find(Container root, Class<T> type, String key) {
+        for (Component c : root.getComponents()) {
+            if (type.isInstance(c) && c.isShowing() && (key.equals(c.getName())
+                    || c instanceof AbstractButton b && key.equals(b.getText()))) {
+                return type.cast(c);
+            }
+            if (c instanceof Container inner) {
+                T found = find(inner, type, key);
+                if (found != null) {
+                    return found;
+                }
+            }
+        }
+        if (root instanceof JDialog || root instanceof HiWindow) {
+            throw new AssertionError("no showing " + type.getSimpleName() + " '" + key + "'");
+        }
+        return null;
+    }
+
+    private static <T> T edt(Callable<T> query) throws Exception {
+        AtomicReference<T> result = new AtomicReference<>();
+        AtomicReference<Exception> failure = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> {
+            try {
+                result.set(query.call());
+            } catch (Exception e) {
+                failure.set(e);
+            }
+        });
+        if (failure.get() != null) {
+            throw failure.get();
+        }
+        return result.get();
+    }
+
+    private void waitFor(String what, BooleanSupplier condition) throws Exception {
+        long deadline = System.nanoTime() + 20_000_000_000L;
+        while (System.nanoTime() < deadline) {
+            if (edt(condition::getAsBoolean)) {
+                return;
+            }
+            Thread.sleep(50);
+        }
+        throw new AssertionError("timed out waiting for: " + what + " (status: " + edt(() -> window.status().message()) + ")");
+    }
+
+    private static void check(boolean holds, String what) {
+        if (!holds) {
+            throw new AssertionError("does not hold: " + what);
+        }
+    }
+}

@@ -73,10 +73,13 @@ public final class ProblemView extends JPanel {
             text.getHighlighter().addHighlight(start, end, new DefaultHighlighter.DefaultHighlightPainter(new Color(0xFFE0E0)));
             text.setCaretPosition(Math.min(end, start + Math.max(p.column(), 1) - 1));
             text.requestFocusInWindow();
-            java.awt.Rectangle r = text.modelToView2D(start).getBounds();
-            r.height = Math.max(r.height, 1) * 8;
-            r.y = Math.max(0, r.y - r.height / 2);
-            text.scrollRectToVisible(r);
+            java.awt.geom.Rectangle2D view = text.modelToView2D(start);
+            if (view != null) {
+                java.awt.Rectangle r = view.getBounds();
+                r.height = Math.max(r.height, 1) * 8;
+                r.y = Math.max(0, r.y - r.height / 2);
+                text.scrollRectToVisible(r);
+            }
         } catch (BadLocationException e) {
             throw new IllegalStateException("line " + p.line() + " is in the text", e);
         }

@@ -27,6 +27,17 @@ class EditorWindowGuiTest {
         assertThat(output).contains("SCENARIO PASSED");
     }
 
+    @Test
+    void shouldOpenAFileWithProblemsReadOnlyAndJumpToEachProblemsLine(RealDisplay display, @TempDir Path dir) throws Exception {
+        Path bad = dir.resolve("bad.fdn");
+        Files.writeString(bad, String.join("\n", "<?xml version=\"1.0\"?>", "<cnet name=\"bad\">",
+                "  <dstructure>", "    <name>a</name>", "  </dstructure>", "  <pstructure>", "    <name>b</name>",
+                "    <host>localhost</host>", "  </pstructure>", "  <connection>", "    <read><data>nowhere</data><proc>b</proc></read>",
+                "  </connection>", "</cnet>", ""));
+        String output = runScenario(display.java(ProblemFileScenario.class, bad.toString()), dir);
+        assertThat(output).contains("SCENARIO PASSED");
+    }
+
     static String runScenario(ProcessBuilder pb, Path dir) throws IOException, InterruptedException {
         Path log = dir.resolve("scenario.log");
         Process p = pb.redirectErrorStream(true).redirectOutput(log.toFile()).start();

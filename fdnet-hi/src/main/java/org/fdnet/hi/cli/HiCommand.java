@@ -54,13 +54,14 @@ public final class HiCommand implements Callable<Integer> {
             return 2;
         }
         HiWindow window = HiApplication.start(file, RecentFiles.forUser());
+        SwingUtilities.invokeAndWait(() -> window.setSize(parseSize()));
+        Thread.sleep(400);
         SwingUtilities.invokeAndWait(() -> prepare(window));
         if (screenshot == null) {
             HiApplication.awaitClosed(window);
             return 0;
         }
-        Thread.sleep(400);
-        SwingUtilities.invokeAndWait(() -> { });
+        Thread.sleep(300);
         Exception[] failure = new Exception[1];
         SwingUtilities.invokeAndWait(() -> {
             try {
@@ -78,10 +79,16 @@ public final class HiCommand implements Callable<Integer> {
         return 0;
     }
 
-    private void prepare(HiWindow window) {
+    private java.awt.Dimension parseSize() {
         String[] wh = size.split("x");
-        window.setSize(Integer.parseInt(wh[0]), Integer.parseInt(wh[1]));
-        window.validate();
+        try {
+            return new java.awt.Dimension(Integer.parseInt(wh[0]), Integer.parseInt(wh[1]));
+        } catch (RuntimeException e) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--size must be WIDTHxHEIGHT, e.g. 1280x800, not " + size);
+        }
+    }
+
+    private void prepare(HiWindow window) {
         if (window.current() == null) {
             return;
         }

@@ -119,7 +119,12 @@ public final class GraphPainter {
         return (0.299 * c.getRed() + 0.587 * c.getGreen() + 0.114 * c.getBlue()) / 255;
     }
 
+    /** Most of the way to white, opaque, so lines behind a faded node stay hidden. */
     private static Color fade(Color c) {
-        return new Color(c.getRed(), c.getGreen(), c.getBlue(), 60);
+        return new Color(towardWhite(c.getRed()), towardWhite(c.getGreen()), towardWhite(c.getBlue()));
+    }
+
+    private static int towardWhite(int v) {
+        return (int) Math.round(v * 0.22 + 255 * 0.78);
     }
 }

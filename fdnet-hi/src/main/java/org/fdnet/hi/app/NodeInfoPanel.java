@@ -27,7 +27,7 @@ import org.fdnet.netinfo.Parameter;
 /**
  * The node information panel: what the clicked node is (module, name, kind, host, path, class,
  * parameters), or the clicked Reader/Writer. Host, path, class and parameter values of a node, and the
- * name and exist flag of a Reader/Writer, can be changed here (Apply: one undoable edit).
+ * name, ends and exist flag of a Reader/Writer, can be changed here (Apply: one undoable edit).
  */
 public final class NodeInfoPanel extends JPanel implements SceneListener {
     private final GraphScene scene;
@@ -48,6 +48,8 @@ public final class NodeInfoPanel extends JPanel implements SceneListener {
     private StatusBar status;
     private JTable paramTable;
     private final JTextField connectionName = new JTextField();
+    private final javax.swing.JComboBox<NodeRef> dataEnd = new javax.swing.JComboBox<>();
+    private final javax.swing.JComboBox<NodeRef> relationEnd = new javax.swing.JComboBox<>();
     private final JCheckBox exists = new JCheckBox("made at start (exist)");
     private final JButton apply = new JButton("Apply");
     private final JPanel fields = new JPanel(new GridBagLayout());
@@ -155,8 +157,10 @@ public final class NodeInfoPanel extends JPanel implements SceneListener {
         ConnectionInfo info = c.connection();
         title.setText(info.kind().label());
         addRow("Declared in", text(c.module()));
-        addRow("Data", text(info.data().toString()));
-        addRow("Relation", text(info.relation().toString()));
+        fillEnds(dataEnd, org.fdnet.netinfo.NodeKind.DATA, info.data());
+        fillEnds(relationEnd, org.fdnet.netinfo.NodeKind.RELATION, info.relation());
+        addRow("Data", dataEnd);
+        addRow("Relation", relationEnd);
         connectionName.setText(info.name() == null ? "" : info.name());
         exists.setSelected(info.exists());
         addRow("Name", connectionName);
@@ -172,12 +176,27 @@ public final class NodeInfoPanel extends JPanel implements SceneListener {
         }
         ConnectionInfo old = c.connection();
         String newName = connectionName.getText().isBlank() ? null : connectionName.getText().trim();
-        ConnectionInfo updated = new ConnectionInfo(old.kind(), newName, old.data(), old.relation(), exists.isSelected(),
-                old.dataInline(), old.relationInline());
+        NodeRef data = (NodeRef) dataEnd.getSelectedItem();
+        NodeRef relation = (NodeRef) relationEnd.getSelectedItem();
+        ConnectionInfo updated = new ConnectionInfo(old.kind(), newName, data, relation, exists.isSelected(),
+                old.dataInline() && data.equals(old.data()), old.relationInline() && relation.equals(old.relation()));
         EditResult result = editor.updateConnection(c.module(), old, updated);
         if (result.accepted()) {
             scene.selectConnection(new ConnectionRef(c.module(), updated));
         }
+    }
+
+    /** Only nodes of the right kind can be chosen as an end, so a connection always joins a Data and a Relation. */
+    private void fillEnds(javax.swing.JComboBox<NodeRef> box, org.fdnet.netinfo.NodeKind kind, NodeRef current) {
+        box.removeAllItems();
+        for (org.fdnet.netinfo.ModuleInfo m : scene.network().modules()) {
+            for (NodeInfo n : m.nodes()) {
+                if (n.kind() == kind) {
+                    box.addItem(new NodeRef(m.name(), n.name()));
+                }
+            }
+        }
+        box.setSelectedItem(current);
     }
 
     private void addRow(String label, JComponent field) {

@@ -111,6 +111,7 @@ final class FileMenu {
             window.current().saveAs(target);
             window.recent().add(target);
             window.refreshTitle();
+            refresh();
             window.status().info("Saved " + target + " and its layout");
             return true;
         } catch (IOException e) {

@@ -95,6 +95,7 @@ public final class HiWindow extends JFrame {
             OpenNetwork opened = OpenNetwork.load(file);
             show(opened);
             recent.add(file);
+            refreshMenus();
             status.info("Opened " + file + (opened.layoutWarning() == null ? "" : " — " + opened.layoutWarning()));
         } catch (NetworkFileException e) {
             showProblems(file, e.problems());
@@ -113,6 +114,7 @@ public final class HiWindow extends JFrame {
             @Override
             public void historyChanged() {
                 refreshTitle();
+                refreshMenus();
             }
 
             @Override
@@ -145,6 +147,7 @@ public final class HiWindow extends JFrame {
         split.setResizeWeight(1);
         replaceContent(split);
         refreshTitle();
+        refreshMenus();
         javax.swing.SwingUtilities.invokeLater(canvas::fit);
     }
 
@@ -158,9 +161,7 @@ public final class HiWindow extends JFrame {
         setTitle(file.getFileName() + " (read-only: " + list.size() + " problems) — FDNet editor");
         status.error(list.size() + " problems in " + file + "; the first: " + list.get(0));
         status.summary(" ");
-        fileMenu.refresh();
-        editMenu.refresh();
-        viewMenu.refresh();
+        refreshMenus();
     }
 
     private void replaceContent(JComponent c) {
@@ -170,6 +171,14 @@ public final class HiWindow extends JFrame {
         content.repaint();
     }
 
+    /** Menus follow the history and what is open; not called while dragging (that changes neither). */
+    void refreshMenus() {
+        fileMenu.refresh();
+        editMenu.refresh();
+        viewMenu.refresh();
+    }
+
+    /** Title (with * while unsaved) and the network in numbers. */
     void refreshTitle() {
         if (current == null) {
             return;
@@ -179,9 +188,6 @@ public final class HiWindow extends JFrame {
         ModuleCounts t = current.editor().network().totalCounts();
         status.summary(current.editor().network().modules().size() + " modules · " + t.datas() + " Datas · "
                 + t.relations() + " Relations · " + t.readers() + " Readers · " + t.writers() + " Writers");
-        fileMenu.refresh();
-        editMenu.refresh();
-        viewMenu.refresh();
     }
 
     /** Asks before edits are lost; true when the caller may go on (saved, discarded, or nothing to lose). */

@@ -168,6 +168,8 @@ public final class GraphCanvas extends JComponent implements SceneListener {
         private Point2D lastModel;
         private Point lastScreen;
         private Point pressScreen;
+        private NodeRef pressedOn;
+        private boolean dragged;
         private Point2D bandStart;
         private boolean panning;
 
@@ -183,6 +185,8 @@ public final class GraphCanvas extends JComponent implements SceneListener {
             }
             boolean adding = e.isShiftDown() || e.isControlDown();
             NodeRef hit = scene.nodeAt(lastModel);
+            pressedOn = adding ? null : hit;
+            dragged = false;
             if (hit != null) {
                 if (adding) {
                     scene.toggle(hit);
@@ -205,6 +209,7 @@ public final class GraphCanvas extends JComponent implements SceneListener {
         @Override
         public void mouseDragged(MouseEvent e) {
             Point2D now = toModel(e.getPoint());
+            dragged = true;
             if (panning) {
                 panX += e.getX() - lastScreen.x;
                 panY += e.getY() - lastScreen.y;
@@ -233,6 +238,10 @@ public final class GraphCanvas extends JComponent implements SceneListener {
                 }
                 scene.select(caught);
             }
+            if (!dragged && pressedOn != null && scene.selection().size() > 1) {
+                scene.select(Set.of(pressedOn));
+            }
+            pressedOn = null;
             boolean clickedRight = panning && pressScreen != null && e.getPoint().distance(pressScreen) < 4
                     && SwingUtilities.isRightMouseButton(e);
             rubberBand = null;

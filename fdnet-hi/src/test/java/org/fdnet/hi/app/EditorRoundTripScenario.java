@@ -98,22 +98,27 @@ public final class EditorRoundTripScenario {
         waitFor("judge's host changed", () -> "robot-2".equals(window.current().editor().network().node(JUDGE).host()));
         NetworkInfo edited = edt(() -> window.current().editor().network().copy());
 
+        // A refused merge (a Data with a Relation): nothing changes, the status bar says why, nothing to undo.
+        click(BALANCE, 0);
+        click(JUDGE, InputEvent.CTRL_DOWN_MASK);
+        waitFor("two nodes selected", () -> scene.selection().size() == 2);
+        Rectangle2D judgePlace = edt(() -> scene.bounds(JUDGE));
+        String undoBefore = edt(() -> window.current().editor().undoLabel());
+        key(KeyEvent.VK_M, InputEvent.CTRL_DOWN_MASK);
+        JDialog question = dialog();
+        SwingUtilities.invokeAndWait(() -> find(question, AbstractButton.class, "Merge, keep both").doClick());
+        waitFor("the refusal in the status bar", () -> window.status().message().startsWith("Refused"));
+        check(edt(() -> window.current().editor().network().equals(edited)), "a refused merge changes nothing");
+        check(edt(() -> scene.bounds(JUDGE)).equals(judgePlace), "a refused merge moves nothing");
+        check(java.util.Objects.equals(edt(() -> window.current().editor().undoLabel()), undoBefore), "a refusal is not a step");
+
         // Merge two nodes through the dialog (click the first, Ctrl-click the second, Ctrl-M), then undo it.
         click(BALANCE, 0);
         click(WALK, InputEvent.CTRL_DOWN_MASK);
         waitFor("two nodes selected", () -> scene.selection().size() == 2);
         key(KeyEvent.VK_M, InputEvent.CTRL_DOWN_MASK);
-        AtomicReference<JDialog> dialog = new AtomicReference<>();
-        waitFor("the merge dialog", () -> {
-            for (Window w : Window.getWindows()) {
-                if (w instanceof JDialog d && d.isShowing()) {
-                    dialog.set(d);
-                    return true;
-                }
-            }
-            return false;
-        });
-        SwingUtilities.invokeAndWait(() -> find(dialog.get(), AbstractButton.class, "Merge, keep both").doClick());
+        JDialog mergeQuestion = dialog();
+        SwingUtilities.invokeAndWait(() -> find(mergeQuestion, AbstractButton.class, "Merge, keep both").doClick());
         waitFor("merged", () -> window.current().editor().network().node(WALK) == null);
         check(edt(() -> window.current().editor().network().connectionsOf(WALK).isEmpty()), "no connection names the merged node");
         key(KeyEvent.VK_Z, InputEvent.CTRL_DOWN_MASK);
@@ -133,6 +138,21 @@ public final class EditorRoundTripScenario {
     }
 
     // ---------------------------------------------------------------- driving
+
+    /** The modal dialog now showing. */
+    private JDialog dialog() throws Exception {
+        AtomicReference<JDialog> dialog = new AtomicReference<>();
+        waitFor("a dialog", () -> {
+            for (Window w : Window.getWindows()) {
+                if (w instanceof JDialog d && d.isShowing()) {
+                    dialog.set(d);
+                    return true;
+                }
+            }
+            return false;
+        });
+        return dialog.get();
+    }
 
     private Point onScreen(NodeRef ref) throws Exception {
         return edt(() -> {

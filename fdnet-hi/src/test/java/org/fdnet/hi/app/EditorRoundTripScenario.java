@@ -81,6 +81,42 @@ public final class EditorRoundTripScenario {
         Rectangle2D after = edt(() -> scene.bounds(JUDGE));
         check(after.getX() > before.getX() + 20 && after.getY() > before.getY() + 10, "dragging moved judge: " + before + " -> " + after);
 
+        // One click hides a module, another shows it; Ctrl-F finds a node by class and selects it.
+        clickButton("module.Walk");
+        waitFor("Walk hidden", () -> !scene.visible("Walk") && scene.visibleNodes().stream().noneMatch(r -> r.module().equals("Walk")));
+        clickButton("module.Walk");
+        waitFor("Walk shown", () -> scene.visible("Walk"));
+        click(JUDGE, 0);
+        key(KeyEvent.VK_F, InputEvent.CTRL_DOWN_MASK);
+        waitFor("the search field has the focus", () -> field("search.field").isFocusOwner());
+        robot.keyPress(KeyEvent.VK_T);
+        robot.keyRelease(KeyEvent.VK_T);
+        for (char c : "hreshold\n".toCharArray()) {
+            int code = c == '\n' ? KeyEvent.VK_ENTER : KeyEvent.getExtendedKeyCodeForChar(c);
+            robot.keyPress(code);
+            robot.keyRelease(code);
+        }
+        waitFor("Ctrl-F found judge terrain", () -> scene.selection().equals(java.util.Set.of(new NodeRef("Integration", "judge terrain"))));
+
+        // A rubber band from empty space selects the nodes it touches (after Ctrl-0 fits the network).
+        key(KeyEvent.VK_0, InputEvent.CTRL_DOWN_MASK);
+        Point corner = edt(() -> {
+            Rectangle2D e = scene.extent();
+            Point2D p = window.canvas().transform().transform(new Point2D.Double(e.getMaxX() + 5, e.getMaxY() + 5), null);
+            Point origin = window.canvas().getLocationOnScreen();
+            return new Point(origin.x + (int) p.getX(), origin.y + (int) p.getY());
+        });
+        Point walkCentre = onScreen(new NodeRef("Walk", "walk"));
+        robot.mouseMove(corner.x, corner.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        for (int i = 1; i <= 10; i++) {
+            robot.mouseMove(corner.x + (walkCentre.x - corner.x) * i / 10, corner.y + (walkCentre.y - corner.y) * i / 10);
+        }
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        robot.waitForIdle();
+        waitFor("the rubber band selected walk and walk candidate", () -> scene.selection().contains(WALK)
+                && scene.selection().contains(new NodeRef("Walk", "walk")));
+
         // Graphic view: Delete removes the selected node and its connections; Ctrl-Z gives them back.
         click(WALK, 0);
         key(KeyEvent.VK_DELETE, 0);
@@ -200,6 +236,18 @@ public final class EditorRoundTripScenario {
                 robot.keyRelease(KeyEvent.VK_CONTROL);
             }
         }
+    }
+
+    private void clickButton(String name) throws Exception {
+        Point p = edt(() -> {
+            AbstractButton b = button(name);
+            Point origin = b.getLocationOnScreen();
+            return new Point(origin.x + b.getWidth() / 2, origin.y + b.getHeight() / 2);
+        });
+        robot.mouseMove(p.x, p.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        robot.waitForIdle();
     }
 
     private JTextField field(String name) {

@@ -65,6 +65,9 @@ public final class NodeInfoPanel extends JPanel implements SceneListener {
         add(title, BorderLayout.NORTH);
         add(fields, BorderLayout.CENTER);
         connectionName.setName("info.connectionName");
+        connectionName.setColumns(10);
+        dataEnd.setPrototypeDisplayValue(new NodeRef("Module", "a Data name"));
+        relationEnd.setPrototypeDisplayValue(new NodeRef("Module", "a Relation name"));
         apply.setName("info.apply");
         apply.addActionListener(e -> applyConnection());
         applyNode.setName("info.applyNode");
@@ -219,14 +222,14 @@ public final class NodeInfoPanel extends JPanel implements SceneListener {
     }
 
     private static JTextField readOnly(String name) {
-        JTextField f = new JTextField();
+        JTextField f = new JTextField(10);
         f.setEditable(false);
         f.setName(name);
         return f;
     }
 
     private static JTextField editable(String name) {
-        JTextField f = new JTextField();
+        JTextField f = new JTextField(10);
         f.setName(name);
         return f;
     }

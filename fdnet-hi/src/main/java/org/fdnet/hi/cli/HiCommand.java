@@ -35,6 +35,10 @@ public final class HiCommand implements Callable<Integer> {
     @Option(names = "--select", paramLabel = "MODULE/NODE", description = "select this node (shown in the information panel)")
     String select;
 
+    @Option(names = "--select-connection", paramLabel = "DATA>RELATION",
+            description = "select the Reader or Writer between these two nodes (MODULE/NODE>MODULE/NODE)")
+    String selectConnection;
+
     @Option(names = "--highlight", paramLabel = "WHICH", description = "highlight the selected node's ANCESTORS, DESCENDANTS or BOTH")
     GraphScene.Relatives highlight;
 
@@ -102,6 +106,15 @@ public final class HiCommand implements Callable<Integer> {
             if (highlight != null) {
                 scene.highlight(ref, highlight);
             }
+        }
+        if (selectConnection != null) {
+            String[] ends = selectConnection.split(">", 2);
+            NodeRef data = NodeRef.parse(ends[0].trim(), "main");
+            NodeRef relation = NodeRef.parse(ends.length > 1 ? ends[1].trim() : "", "main");
+            scene.visibleConnections().stream()
+                    .filter(c -> c.connection().data().equals(data) && c.connection().relation().equals(relation))
+                    .findFirst().ifPresentOrElse(scene::selectConnection,
+                            () -> window.status().error("no Reader or Writer between " + data + " and " + relation));
         }
         window.canvas().fit();
         if (find != null) {

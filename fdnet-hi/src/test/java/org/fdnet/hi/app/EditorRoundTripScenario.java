@@ -161,9 +161,20 @@ public final class EditorRoundTripScenario {
         waitFor("merge undone", () -> window.current().editor().network().node(WALK) != null);
         check(edt(() -> window.current().editor().network().equals(edited)), "undoing the merge gives the edited network back");
 
+        // The title marks unsaved edits; Ctrl-N asks first, and Cancel keeps everything.
+        check(edt(() -> window.getTitle().startsWith("*")), "the title marks unsaved edits: " + edt(window::getTitle));
+        key(KeyEvent.VK_N, InputEvent.CTRL_DOWN_MASK);
+        JDialog unsaved = dialog();
+        check(edt(unsaved::getTitle).equals("Unsaved changes"), "Ctrl-N asks before losing edits");
+        SwingUtilities.invokeAndWait(() -> find(unsaved, AbstractButton.class, "Cancel").doClick());
+        waitFor("the dialog closed", () -> !unsaved.isShowing());
+        check(edt(() -> window.current().editor().network().equals(edited) && window.current().unsaved()), "Cancel keeps the edits");
+        SwingUtilities.invokeAndWait(() -> window.canvas().requestFocus());
+
         // Save with Ctrl-S; reopen the file and find the same network and the same layout.
         key(KeyEvent.VK_S, InputEvent.CTRL_DOWN_MASK);
         waitFor("saved", () -> !window.current().unsaved());
+        check(edt(() -> !window.getTitle().startsWith("*")), "the title is clean after saving");
         NetworkLayout savedLayout = edt(() -> window.current().savedLayout());
         SwingUtilities.invokeAndWait(() -> window.open(file));
         check(edt(() -> window.current().editor().network().equals(edited)), "the reopened network is the edited one");

@@ -104,6 +104,9 @@ public final class NodeInfoPanel extends JPanel implements SceneListener {
         host.setText(node.host());
         path.setText(node.path());
         className.setText(node.className());
+        for (JTextField f : new JTextField[] {module, name, host, path, className}) {
+            f.setCaretPosition(0);
+        }
         parameters.setRowCount(0);
         for (Parameter p : node.parameters()) {
             parameters.addRow(new Object[] {p.name() == null ? "" : p.name(), p.type() == null ? "" : p.type().attribute(), p.value()});

@@ -35,6 +35,8 @@ public final class GraphScene {
     /** Which relatives of a node to highlight. */
     public enum Relatives { ANCESTORS, DESCENDANTS, BOTH }
 
+    private static final double PARALLEL_GAP = 5;
+
     private final UndoableNetworkEditor editor;
     private final List<SceneListener> listeners = new CopyOnWriteArrayList<>();
     private final Set<NodeRef> selected = new LinkedHashSet<>();
@@ -122,8 +124,33 @@ public final class GraphScene {
         }
         Point2D ca = new Point2D.Double(a.getCenterX(), a.getCenterY());
         Point2D cb = new Point2D.Double(b.getCenterX(), b.getCenterY());
-        return new Line2D.Double(NodeShapes.border(network().node(from).kind(), a, cb),
+        Line2D line = new Line2D.Double(NodeShapes.border(network().node(from).kind(), a, cb),
                 NodeShapes.border(network().node(to).kind(), b, ca));
+        return hasOpposite(c) ? shifted(line, PARALLEL_GAP) : line;
+    }
+
+    /** A Relation that reads and writes the same Data (a feedback loop): its two arrows are drawn side by side. */
+    private boolean hasOpposite(ConnectionInfo c) {
+        for (var linked : network().connectionsOf(c.data())) {
+            ConnectionInfo other = linked.connection();
+            if (other.kind() != c.kind() && other.relation().equals(c.relation())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** The line moved sideways (to its right, seen along its direction), so two opposite arrows do not overlap. */
+    private static Line2D shifted(Line2D l, double by) {
+        double dx = l.getX2() - l.getX1();
+        double dy = l.getY2() - l.getY1();
+        double d = Math.hypot(dx, dy);
+        if (d == 0) {
+            return l;
+        }
+        double ox = -dy / d * by;
+        double oy = dx / d * by;
+        return new Line2D.Double(l.getX1() + ox, l.getY1() + oy, l.getX2() + ox, l.getY2() + oy);
     }
 
     public NodeRef nodeAt(Point2D p) {

@@ -3,6 +3,7 @@ package org.fdnet.hi.app;
 import java.awt.Point;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import javax.swing.Action;
 import javax.swing.JComponent;
 import javax.swing.JMenu;
@@ -64,7 +65,7 @@ final class EditMenu {
 
     /** Double-click on a node: select it and show it in the information panel. */
     void openNode(NodeRef ref) {
-        scene().select(java.util.Set.of(ref));
+        scene().select(Set.of(ref));
     }
 
     void popup(JComponent canvas, Point p, NodeRef ref) {
@@ -120,7 +121,7 @@ final class EditMenu {
         NodeInfo node = new NodeInfo(kind, draft.name(), "localhost", "", draft.className(), List.of());
         EditResult r = editor().addNode(draft.module(), node);
         if (r.accepted()) {
-            scene().select(java.util.Set.of(r.node()));
+            scene().select(Set.of(r.node()));
             window.canvas().reveal(r.node());
             window.status().info("Added " + kind.label() + " " + r.node());
         }
@@ -159,7 +160,7 @@ final class EditMenu {
         if (name != null) {
             EditResult r = editor().renameNode(ref, name.trim());
             if (r.accepted()) {
-                scene().select(java.util.Set.of(r.node()));
+                scene().select(Set.of(r.node()));
                 window.status().info("Renamed " + ref + " to " + name.trim());
             }
         }
@@ -179,7 +180,7 @@ final class EditMenu {
         EditResult r = choice.replace() ? editor().replaceNode(two.get(1), two.get(0))
                 : editor().mergeNodes(two.get(0), two.get(1), choice.policy());
         if (r.accepted()) {
-            scene().select(java.util.Set.of(r.node()));
+            scene().select(Set.of(r.node()));
             window.status().info((choice.replace() ? "Replaced " : "Merged into ") + r.node());
         }
     }

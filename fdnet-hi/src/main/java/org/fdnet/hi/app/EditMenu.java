@@ -13,6 +13,10 @@ import org.fdnet.hi.edit.NetworkEditor.EditResult;
 import org.fdnet.hi.edit.UndoableNetworkEditor;
 import org.fdnet.hi.graph.ConnectionRef;
 import org.fdnet.hi.graph.GraphScene;
+import org.fdnet.hi.merge.MergeReplaceDialog;
+import org.fdnet.hi.text.AdvancedModuleFrame;
+import org.fdnet.hi.text.BasicModuleFrame;
+import org.fdnet.hi.text.NetworkFrame;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.MergePolicy;
 import org.fdnet.netinfo.ModuleInfo;
@@ -42,6 +46,10 @@ final class EditMenu {
         menu.addSeparator();
         menu.add(editing(MenuItems.action("Find…", "control F", () -> window.search().open())));
         menu.addSeparator();
+        menu.add(editing(MenuItems.action("Network…", "control shift N", this::openNetworkFrame)));
+        menu.add(editing(MenuItems.action("Module…", "control shift M", () -> openModuleFrame(false))));
+        menu.add(editing(MenuItems.action("Module (Advanced)…", "control shift E", () -> openModuleFrame(true))));
+        menu.addSeparator();
         menu.add(editing(MenuItems.action("Add Data…", null, () -> addNode(NodeKind.DATA))));
         menu.add(editing(MenuItems.action("Add Relation…", null, () -> addNode(NodeKind.RELATION))));
         menu.add(editing(MenuItems.action("Connect Selected Nodes", "control K", this::connectSelected)));
@@ -63,9 +71,25 @@ final class EditMenu {
         editing.forEach(a -> a.setEnabled(open));
     }
 
-    /** Double-click on a node: select it and show it in the information panel. */
+    /** Double-click on a node: the Advanced Module frame of its module, with the node loaded. */
     void openNode(NodeRef ref) {
         scene().select(Set.of(ref));
+        AdvancedModuleFrame.open(window, editor(), ref.module()).showNode(ref.node());
+    }
+
+    /** The thesis's Network frame: modules, load at start, the network in numbers. */
+    private void openNetworkFrame() {
+        NetworkFrame.open(window, editor());
+    }
+
+    /** The Basic or Advanced Module frame of the selected node's module (main when nothing is selected). */
+    private void openModuleFrame(boolean advanced) {
+        String module = selectedModule();
+        if (advanced) {
+            AdvancedModuleFrame.open(window, editor(), module);
+        } else {
+            BasicModuleFrame.open(window, editor(), module);
+        }
     }
 
     void popup(JComponent canvas, Point p, NodeRef ref) {
@@ -158,8 +182,9 @@ final class EditMenu {
         NodeRef ref = scene().selection().iterator().next();
         String name = JOptionPane.showInputDialog(window, "New name for " + ref + ":", ref.node());
         if (name != null) {
-            EditResult r = editor().renameNode(ref, name.trim());
-            if (r.accepted()) {
+            EditResult r = MergeReplaceDialog.renameOrAsk(window, editor(), ref, name.trim());
+            window.canvas().requestFocus();
+            if (r != null && r.accepted()) {
                 scene().select(Set.of(r.node()));
                 window.status().info("Renamed " + ref + " to " + name.trim());
             }
@@ -172,6 +197,10 @@ final class EditMenu {
             window.status().error("Select the two nodes to merge or replace (the first selected stays)");
             return;
         }
+        if (two.get(0).module().equals(two.get(1).module())) {
+            mergeInOneModule(two.get(0), two.get(1));
+            return;
+        }
         MergeChoice choice = MergeChoice.ask(window, two.get(0), two.get(1));
         window.canvas().requestFocus();
         if (choice == null) {
@@ -182,6 +211,21 @@ final class EditMenu {
         if (r.accepted()) {
             scene().select(Set.of(r.node()));
             window.status().info((choice.replace() ? "Replaced " : "Merged into ") + r.node());
+        }
+    }
+
+    /**
+     * Two nodes of one module: the thesis's Merge/Replace dialog, as if the second took the first's name
+     * (replace: the first goes; merge: the first stays, with every connection of both).
+     */
+    private void mergeInOneModule(NodeRef stays, NodeRef incoming) {
+        MergeReplaceDialog dialog = new MergeReplaceDialog(window, editor(), incoming, stays.node());
+        dialog.setVisible(true);
+        window.canvas().requestFocus();
+        EditResult r = dialog.result();
+        if (r != null && r.accepted()) {
+            scene().select(Set.of(r.node() != null ? r.node() : stays));
+            window.status().info("Merged or replaced: " + stays);
         }
     }
 
@@ -200,7 +244,10 @@ final class EditMenu {
         }
     }
 
-    /** The answer of the merge/replace question. */
+    /**
+     * The answer for two nodes of different modules, which the thesis's dialog (one module, a name taken)
+     * does not cover: NetworkInfo merges across modules, so the graph offers it.
+     */
     record MergeChoice(boolean replace, MergePolicy policy) {
         static MergeChoice ask(HiWindow owner, NodeRef first, NodeRef second) {
             String[] options = {"Merge, keep " + first.node() + "'s parameters", "Merge, keep " + second.node() + "'s parameters",

@@ -35,6 +35,8 @@ public final class EditorRoundTripScenario {
     private static final NodeRef JUDGE = new NodeRef("Integration", "judge");
     private static final NodeRef BALANCE = new NodeRef("Balance", "balance candidate");
     private static final NodeRef WALK = new NodeRef("Walk", "walk candidate");
+    private static final NodeRef JUDGMENT = new NodeRef("Integration", "judgment");
+    private static final NodeRef TOO_STEEP = new NodeRef("Integration", "too steep");
 
     private final HiWindow window;
     private final Robot robot;
@@ -125,13 +127,25 @@ public final class EditorRoundTripScenario {
         waitFor("walk candidate back", () -> window.current().editor().network().node(WALK) != null);
         check(edt(() -> window.current().editor().network().equals(original)), "undoing the delete gives the network back");
 
-        // Text fields: judge's host changed through the information panel.
-        click(JUDGE, 0);
+        // Text view: double-click judge opens the thesis's Advanced Module frame with judge loaded ("Update");
+        // its host is changed there, then a parameter value in the information panel.
+        doubleClick(JUDGE);
+        JDialog frame = dialog();
+        check(edt(frame::getTitle).equals("Module Integration"), "double-click opens judge's module: " + edt(frame::getTitle));
+        waitFor("judge loaded in the frame", () -> find(frame, AbstractButton.class, "Update") != null);
         SwingUtilities.invokeAndWait(() -> {
-            field("info.host").setText("robot-2");
-            button("info.applyNode").doClick();
+            fieldAfter(frame, "Host :").setText("robot-2");
+            find(frame, AbstractButton.class, "Update").doClick();
         });
         waitFor("judge's host changed", () -> "robot-2".equals(window.current().editor().network().node(JUDGE).host()));
+        SwingUtilities.invokeAndWait(frame::dispose);
+        click(JUDGE, 0);
+        SwingUtilities.invokeAndWait(() -> {
+            javax.swing.JTable table = find(window, javax.swing.JTable.class, "info.parameters");
+            table.setValueAt("in1 * (in0 ? 0.3 : 1.0)", 0, 2);
+            button("info.applyNode").doClick();
+        });
+        waitFor("judge's expression changed", () -> window.current().editor().network().node(JUDGE).parameter("expression").contains("0.3"));
         NetworkInfo edited = edt(() -> window.current().editor().network().copy());
 
         // A refused merge (a Data with a Relation): nothing changes, the status bar says why, nothing to undo.
@@ -148,17 +162,23 @@ public final class EditorRoundTripScenario {
         check(edt(() -> scene.bounds(JUDGE)).equals(judgePlace), "a refused merge moves nothing");
         check(java.util.Objects.equals(edt(() -> window.current().editor().undoLabel()), undoBefore), "a refusal is not a step");
 
-        // Merge two nodes through the dialog (click the first, Ctrl-click the second, Ctrl-M), then undo it.
-        click(BALANCE, 0);
-        click(WALK, InputEvent.CTRL_DOWN_MASK);
+        // Merge two nodes of one module through the thesis's Merge/Replace dialog (click the node that stays,
+        // Ctrl-click the other, Ctrl-M, Merge, OK), then undo it.
+        click(JUDGMENT, 0);
+        click(TOO_STEEP, InputEvent.CTRL_DOWN_MASK);
         waitFor("two nodes selected", () -> scene.selection().size() == 2);
         key(KeyEvent.VK_M, InputEvent.CTRL_DOWN_MASK);
         JDialog mergeQuestion = dialog();
-        SwingUtilities.invokeAndWait(() -> find(mergeQuestion, AbstractButton.class, "Merge, keep both").doClick());
-        waitFor("merged", () -> window.current().editor().network().node(WALK) == null);
-        check(edt(() -> window.current().editor().network().connectionsOf(WALK).isEmpty()), "no connection names the merged node");
+        SwingUtilities.invokeAndWait(() -> {
+            find(mergeQuestion, AbstractButton.class, "Merge").doClick();
+            find(mergeQuestion, AbstractButton.class, "OK").doClick();
+        });
+        waitFor("merged", () -> window.current().editor().network().node(TOO_STEEP) == null);
+        check(edt(() -> window.current().editor().network().connectionsOf(TOO_STEEP).isEmpty()), "no connection names the merged node");
+        check(edt(() -> window.current().editor().network().connectionsOf(JUDGMENT).size()
+                > edited.connectionsOf(JUDGMENT).size()), "the node that stays has the other's connections");
         key(KeyEvent.VK_Z, InputEvent.CTRL_DOWN_MASK);
-        waitFor("merge undone", () -> window.current().editor().network().node(WALK) != null);
+        waitFor("merge undone", () -> window.current().editor().network().node(TOO_STEEP) != null);
         check(edt(() -> window.current().editor().network().equals(edited)), "undoing the merge gives the edited network back");
 
         // The title marks unsaved edits; Ctrl-N asks first, and Cancel keeps everything.
@@ -218,6 +238,37 @@ public final class EditorRoundTripScenario {
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
         press(modifiers, false);
         robot.waitForIdle();
+    }
+
+    private void doubleClick(NodeRef ref) throws Exception {
+        Point p = onScreen(ref);
+        robot.mouseMove(p.x, p.y);
+        for (int i = 0; i < 2; i++) {
+            robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+            robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        }
+        robot.waitForIdle();
+    }
+
+    /** The text field placed right after the label {@code label} in the same panel. */
+    private static JTextField fieldAfter(Container root, String label) {
+        for (Component c : root.getComponents()) {
+            if (c instanceof javax.swing.JLabel l && label.equals(l.getText())) {
+                Component[] siblings = c.getParent().getComponents();
+                for (int i = 0; i < siblings.length - 1; i++) {
+                    if (siblings[i] == c && siblings[i + 1] instanceof JTextField f) {
+                        return f;
+                    }
+                }
+            }
+            if (c instanceof Container inner) {
+                JTextField found = fieldAfter(inner, label);
+                if (found != null) {
+                    return found;
+                }
+            }
+        }
+        return null;
     }
 
     private void drag(NodeRef ref, int dx, int dy) throws Exception {
@@ -282,9 +333,6 @@ public final class EditorRoundTripScenario {
                     return found;
                 }
             }
-        }
-        if (root instanceof JDialog || root instanceof HiWindow) {
-            throw new AssertionError("no showing " + type.getSimpleName() + " '" + key + "'");
         }
         return null;
     }

@@ -46,7 +46,7 @@ final class EditMenu {
         menu.addSeparator();
         menu.add(editing(MenuItems.action("Find…", "control F", () -> window.search().open())));
         menu.addSeparator();
-        menu.add(editing(MenuItems.action("Network…", "control shift N", this::openNetworkFrame)));
+        menu.add(editing(MenuItems.action("Network…", "control shift N", () -> openNetworkFrame())));
         menu.add(editing(MenuItems.action("Module…", "control shift M", () -> openModuleFrame(false))));
         menu.add(editing(MenuItems.action("Module (Advanced)…", "control shift E", () -> openModuleFrame(true))));
         menu.addSeparator();
@@ -78,18 +78,21 @@ final class EditMenu {
     }
 
     /** The thesis's Network frame: modules, load at start, the network in numbers. */
-    private void openNetworkFrame() {
-        NetworkFrame.open(window, editor());
+    javax.swing.JDialog openNetworkFrame() {
+        return NetworkFrame.open(window, editor());
     }
 
     /** The Basic or Advanced Module frame of the selected node's module (main when nothing is selected). */
-    private void openModuleFrame(boolean advanced) {
+    javax.swing.JDialog openModuleFrame(boolean advanced) {
         String module = selectedModule();
         if (advanced) {
-            AdvancedModuleFrame.open(window, editor(), module);
-        } else {
-            BasicModuleFrame.open(window, editor(), module);
+            AdvancedModuleFrame frame = AdvancedModuleFrame.open(window, editor(), module);
+            if (scene().selection().size() == 1) {
+                frame.showNode(scene().selection().iterator().next().node());
+            }
+            return frame;
         }
+        return BasicModuleFrame.open(window, editor(), module);
     }
 
     void popup(JComponent canvas, Point p, NodeRef ref) {

@@ -204,6 +204,18 @@ public final class HiWindow extends JFrame {
         return answer == JOptionPane.NO_OPTION;
     }
 
+    /** Opens one of the thesis's text frames (for the selected node's module) and returns it. */
+    public javax.swing.JDialog openTextFrame(TextFrame which) {
+        return switch (which) {
+            case NETWORK -> editMenu.openNetworkFrame();
+            case MODULE -> editMenu.openModuleFrame(false);
+            case ADVANCED -> editMenu.openModuleFrame(true);
+        };
+    }
+
+    /** The text frames: the Network frame, the Basic and the Advanced Module frame. */
+    public enum TextFrame { NETWORK, MODULE, ADVANCED }
+
     Path problemFile() {
         return problemFile;
     }

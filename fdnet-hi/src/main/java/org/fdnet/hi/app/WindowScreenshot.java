@@ -5,16 +5,16 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
-import javax.swing.JFrame;
+import javax.swing.RootPaneContainer;
 
-/** The window's content (menu bar, panels, status bar) rendered to a PNG, as it is on screen. */
+/** A window's content (menu bar, panels, status bar; no title bar) rendered to a PNG, as it is on screen. */
 public final class WindowScreenshot {
     private WindowScreenshot() {
     }
 
     /** Call on the Swing thread, once the window is shown and laid out. */
-    public static void write(JFrame frame, Path file) throws IOException {
-        var root = frame.getRootPane();
+    public static void write(RootPaneContainer window, Path file) throws IOException {
+        var root = window.getRootPane();
         BufferedImage image = new BufferedImage(root.getWidth(), root.getHeight(), BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         try {

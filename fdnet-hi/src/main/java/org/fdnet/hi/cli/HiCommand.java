@@ -45,11 +45,17 @@ public final class HiCommand implements Callable<Integer> {
     @Option(names = "--hide", paramLabel = "MODULE", split = ",", description = "modules to hide")
     String[] hide = new String[0];
 
+    @Option(names = "--frame", paramLabel = "WHICH",
+            description = "open a text frame: NETWORK, MODULE or ADVANCED (of the selected node's module); --screenshot then shows it")
+    HiWindow.TextFrame frame;
+
     @Option(names = "--find", paramLabel = "TEXT", description = "search for TEXT as Ctrl-F does")
     String find;
 
     @Spec
     CommandSpec spec;
+
+    private javax.swing.JDialog opened;
 
     @Override
     public Integer call() throws Exception {
@@ -69,7 +75,10 @@ public final class HiCommand implements Callable<Integer> {
         Exception[] failure = new Exception[1];
         SwingUtilities.invokeAndWait(() -> {
             try {
-                WindowScreenshot.write(window, screenshot);
+                WindowScreenshot.write(opened == null ? window : opened, screenshot);
+                if (opened != null) {
+                    opened.dispose();
+                }
             } catch (Exception e) {
                 failure[0] = e;
             }
@@ -120,6 +129,9 @@ public final class HiCommand implements Callable<Integer> {
         if (find != null) {
             window.search().open();
             window.search().search(find);
+        }
+        if (frame != null) {
+            opened = window.openTextFrame(frame);
         }
     }
 }

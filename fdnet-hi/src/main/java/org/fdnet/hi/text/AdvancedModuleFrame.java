@@ -107,6 +107,8 @@ public final class AdvancedModuleFrame extends JDialog {
         for (ParameterType t : ParameterType.values()) {
             paramType.addItem(t.attribute());
         }
+        nodeKind.setRenderer(new KindLabels<>(NodeKind::label));
+        connectionKind.setRenderer(new KindLabels<>(ConnectionKind::label));
         paramTable.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
         connectionList.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
 

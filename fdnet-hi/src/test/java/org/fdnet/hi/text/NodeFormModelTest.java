@@ -125,6 +125,26 @@ class NodeFormModelTest {
     }
 
     @Test
+    void shouldUpdateEachDependentWidgetExactlyOncePerKeystrokeAndPerNetworkChange() {
+        List<String> log = new java.util.ArrayList<>();
+        speedy.register("view:details", () -> log.add("details"), form.details());
+        speedy.register("view:actions", () -> log.add("actions"), form.actions());
+        speedy.register("view:both", () -> log.add("both"), form.details(), form.actions());
+
+        form.typeName("S");
+        assertThat(log).containsExactly("details", "actions", "both");
+
+        log.clear();
+        network.addNode("Arm", NodeInfo.data("Wrist", "fdnet.Wrist"));
+        assertThat(log).containsExactly("details", "actions", "both");
+
+        log.clear();
+        form.typeHost("h");
+        assertThat(log).as("a detail typed: the details widgets are the source's children, the name is not")
+                .containsExactly("details", "actions", "both");
+    }
+
+    @Test
     void shouldFollowItsModuleWhenItIsRenamedElsewhere() {
         NodeFormModel arm = new NodeFormModel(editor, "Arm", speedy);
         network.renameModule("Arm", "LeftArm");

@@ -97,6 +97,20 @@ public final class ModuleInfo {
         nodes.put(node.name(), node);
     }
 
+    void insertNode(int position, NodeInfo node) {
+        LinkedHashMap<String, NodeInfo> reordered = new LinkedHashMap<>();
+        int i = 0;
+        for (Map.Entry<String, NodeInfo> e : nodes.entrySet()) {
+            if (i++ == position) {
+                reordered.put(node.name(), node);
+            }
+            reordered.put(e.getKey(), e.getValue());
+        }
+        reordered.putIfAbsent(node.name(), node);
+        nodes.clear();
+        nodes.putAll(reordered);
+    }
+
     /** Replaces the node called {@code oldName} keeping its position in the declaration order. */
     void replaceNodeInPlace(String oldName, NodeInfo node) {
         if (oldName.equals(node.name())) {

@@ -164,6 +164,32 @@ public final class NetworkInfo {
         return module;
     }
 
+    /**
+     * Adds an empty module at {@code position} in the declaration order (0 = first): what undoing a
+     * module's deletion needs to give back the network exactly as it was.
+     */
+    public ModuleInfo addModule(String moduleName, boolean loadAtStart, int position) {
+        ModelRules.checkName("module", moduleName);
+        if (modules.containsKey(moduleName)) {
+            throw new EditRefusedException("the network already has a module named '" + moduleName + "'");
+        }
+        checkPosition(position, modules.size());
+        ModuleInfo module = new ModuleInfo(moduleName, loadAtStart);
+        LinkedHashMap<String, ModuleInfo> reordered = new LinkedHashMap<>();
+        int i = 0;
+        for (ModuleInfo m : modules.values()) {
+            if (i++ == position) {
+                reordered.put(moduleName, module);
+            }
+            reordered.put(m.name(), m);
+        }
+        reordered.putIfAbsent(moduleName, module);
+        modules.clear();
+        modules.putAll(reordered);
+        changed(NetworkChange.Kind.MODULE_ADDED, moduleName, null);
+        return module;
+    }
+
     /** Deletes a module, its nodes, and every connection in any module that touches one of them. */
     public void deleteModule(String moduleName) {
         ModuleInfo doomed = requireModule(moduleName);
@@ -229,6 +255,20 @@ public final class NetworkInfo {
                     + "' (replace or merge it instead)");
         }
         module.putNode(node);
+        changed(NetworkChange.Kind.NODE_ADDED, moduleName, node.name());
+        return new NodeRef(moduleName, node.name());
+    }
+
+    /** Adds a node at {@code position} among its module's nodes (0 = first): what undoing a deletion needs. */
+    public NodeRef addNode(String moduleName, NodeInfo node, int position) {
+        ModuleInfo module = requireModule(moduleName);
+        ModelRules.checkNode(node);
+        if (module.hasNode(node.name())) {
+            throw new EditRefusedException("module '" + moduleName + "' already has a node named '" + node.name()
+                    + "' (replace or merge it instead)");
+        }
+        checkPosition(position, module.nodes().size());
+        module.insertNode(position, node);
         changed(NetworkChange.Kind.NODE_ADDED, moduleName, node.name());
         return new NodeRef(moduleName, node.name());
     }
@@ -376,6 +416,21 @@ public final class NetworkInfo {
         changed(NetworkChange.Kind.CONNECTION_ADDED, moduleName, connection.toString());
     }
 
+    /** Adds a connection at {@code position} among those {@code moduleName} declares: what undoing a deletion needs. */
+    public void addConnection(String moduleName, ConnectionInfo connection, int position) {
+        ModuleInfo module = requireModule(moduleName);
+        ModelRules.checkConnectionEnds(this, connection);
+        for (LinkedConnection existing : index().connectionsOf(connection.data())) {
+            if (existing.connection().sameLink(connection)) {
+                throw new EditRefusedException("duplicate " + connection + " (already declared in module '" + existing.module() + "')");
+            }
+        }
+        checkPosition(position, module.connections().size());
+        module.mutableConnections().add(position, connection);
+        index = null;
+        changed(NetworkChange.Kind.CONNECTION_ADDED, moduleName, connection.toString());
+    }
+
     public void deleteConnection(String moduleName, ConnectionInfo connection) {
         ModuleInfo module = requireModule(moduleName);
         if (!module.mutableConnections().remove(connection)) {
@@ -385,6 +440,12 @@ public final class NetworkInfo {
     }
 
     // ---------------------------------------------------------------- internals
+
+    private static void checkPosition(int position, int size) {
+        if (position < 0 || position > size) {
+            throw new EditRefusedException("position " + position + " is outside 0.." + size);
+        }
+    }
 
     private void removeConnectionsTouching(NodeRef ref) {
         for (ModuleInfo m : modules.values()) {

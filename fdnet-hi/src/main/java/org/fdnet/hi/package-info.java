@@ -1,5 +1,7 @@
 /**
- * The Human Interface: graphical and text-based network editor and live control of a running network.
- * Part 6 of the plan fills this module; it holds no code yet and nothing here claims to work.
+ * The Human Interface: the graphical and text-based network editor ({@code fdnet hi}). Packages by
+ * component: {@code edit} (the undoable editor every view edits through), {@code graph} (the graphic
+ * panel), {@code layout} (automatic layout with ELK), {@code app} (the window, menus and panels),
+ * {@code cli} (the commands and the benchmark).
  */
 package org.fdnet.hi;

@@ -7,5 +7,16 @@
  *  text frames ───┼─▶ NetworkEditor ─▶ NetworkInfo edit ─▶ change listeners ─▶ every view repaints
  *  dialogs ───────┘        └─▶ undo/redo history, dirty marker (live mode: the running network first)
  * </pre>
+ *
+ * <p>{@link org.fdnet.hi.edit.UndoableNetworkEditor} implements the door. Each call builds a
+ * {@link org.fdnet.hi.edit.ReversibleEdit}; applying it to the network returns its inverse (deleteNode's
+ * inverse re-adds the node and each of its connections at their places), which goes on the undo stack of
+ * {@link org.fdnet.hi.edit.EditHistory}; applying an inverse returns the redo. No step copies the model.
+ *
+ * <pre>
+ *  editor.deleteNode(r) ─▶ NodeEdits.delete(r).applyTo(target) ─▶ NetworkInfo.deleteNode(r)
+ *                                   └─ returns [addNode(r, at i), addConnection(c, at j)…] ─▶ undo stack
+ *  editor.undo() ─▶ inverse.applyTo(target) ─▶ returns the redo edit ─▶ redo stack
+ * </pre>
  */
 package org.fdnet.hi.edit;

@@ -1,0 +1,222 @@
+package org.fdnet.hi.app;
+
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.nio.file.Path;
+import java.util.List;
+import javax.swing.JComponent;
+import javax.swing.JFrame;
+import javax.swing.JMenuBar;
+import javax.swing.JOptionPane;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.JSplitPane;
+import javax.swing.WindowConstants;
+import org.fdnet.hi.edit.EditorListener;
+import org.fdnet.hi.graph.GraphCanvas;
+import org.fdnet.hi.graph.SceneListener;
+import org.fdnet.netinfo.ModuleCounts;
+import org.fdnet.netinfo.xml.NetworkFileException;
+import org.fdnet.netinfo.xml.Problem;
+
+/**
+ * The editor's main window. It shows either one open network (module bar and search bar above the graphic
+ * panel, the node information panel at the right) or, for a file with problems, the read-only
+ * {@link ProblemView}; the status bar is always at the bottom. The menus live in {@link FileMenu},
+ * {@link EditMenu} and {@link ViewMenu}.
+ */
+public final class HiWindow extends JFrame {
+    private final StatusBar status = new StatusBar();
+    private final RecentFiles recent;
+    private final JPanel content = new JPanel(new BorderLayout());
+    private OpenNetwork current;
+    private GraphCanvas canvas;
+    private SearchBar search;
+    private ProblemView problems;
+    private Path problemFile;
+    private final FileMenu fileMenu;
+    private final EditMenu editMenu;
+    private final ViewMenu viewMenu;
+
+    public HiWindow(RecentFiles recent) {
+        super("FDNet editor");
+        this.recent = recent;
+        setDefaultCloseOperation(WindowConstants.DO_NOTHING_ON_CLOSE);
+        addWindowListener(new java.awt.event.WindowAdapter() {
+            @Override
+            public void windowClosing(java.awt.event.WindowEvent e) {
+                fileMenu.quit();
+            }
+        });
+        fileMenu = new FileMenu(this);
+        editMenu = new EditMenu(this);
+        viewMenu = new ViewMenu(this);
+        JMenuBar bar = new JMenuBar();
+        bar.add(fileMenu.menu());
+        bar.add(editMenu.menu());
+        bar.add(viewMenu.menu());
+        setJMenuBar(bar);
+        getContentPane().add(content, BorderLayout.CENTER);
+        getContentPane().add(status, BorderLayout.SOUTH);
+        setSize(new Dimension(1280, 800));
+        show(OpenNetwork.empty());
+    }
+
+    // ---------------------------------------------------------------- what is shown
+
+    public OpenNetwork current() {
+        return current;
+    }
+
+    public GraphCanvas canvas() {
+        return canvas;
+    }
+
+    public SearchBar search() {
+        return search;
+    }
+
+    /** The read-only view of a file with problems, or {@code null}. */
+    public ProblemView problems() {
+        return problems;
+    }
+
+    public StatusBar status() {
+        return status;
+    }
+
+    RecentFiles recent() {
+        return recent;
+    }
+
+    /** Opens {@code file}: its network, or its problems read-only. */
+    public void open(Path file) {
+        try {
+            OpenNetwork opened = OpenNetwork.load(file);
+            show(opened);
+            recent.add(file);
+            refreshMenus();
+            status.info("Opened " + file + (opened.layoutWarning() == null ? "" : " — " + opened.layoutWarning()));
+        } catch (NetworkFileException e) {
+            showProblems(file, e.problems());
+        }
+    }
+
+    public void show(OpenNetwork network) {
+        current = network;
+        problems = null;
+        problemFile = null;
+        canvas = new GraphCanvas(network.scene());
+        search = new SearchBar(network.scene(), canvas);
+        NodeInfoPanel info = new NodeInfoPanel(network.scene(), network.editor());
+        info.reportTo(status);
+        network.editor().addEditorListener(new EditorListener() {
+            @Override
+            public void historyChanged() {
+                refreshTitle();
+                refreshMenus();
+            }
+
+            @Override
+            public void refused(String reason) {
+                status.error("Refused: " + reason);
+            }
+        });
+        network.scene().addListener(new SceneListener() {
+            @Override
+            public void sceneChanged() {
+                refreshTitle();
+            }
+
+            @Override
+            public void selectionChanged() {
+                // the info panel follows the selection itself
+            }
+        });
+        canvas.onActivate(editMenu::openNode);
+        canvas.onPopup((p, ref) -> editMenu.popup(canvas, p, ref));
+        JPanel top = new JPanel(new BorderLayout());
+        top.add(new ModuleBar(network.scene()), BorderLayout.NORTH);
+        top.add(search, BorderLayout.SOUTH);
+        JPanel graph = new JPanel(new BorderLayout());
+        graph.add(top, BorderLayout.NORTH);
+        graph.add(canvas, BorderLayout.CENTER);
+        JScrollPane side = new JScrollPane(info);
+        side.setPreferredSize(new Dimension(320, 400));
+        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, graph, side);
+        split.setResizeWeight(1);
+        replaceContent(split);
+        refreshTitle();
+        refreshMenus();
+        javax.swing.SwingUtilities.invokeLater(canvas::fit);
+    }
+
+    public void showProblems(Path file, List<Problem> list) {
+        current = null;
+        canvas = null;
+        search = null;
+        problemFile = file;
+        problems = new ProblemView(file, list);
+        replaceContent(problems);
+        setTitle(file.getFileName() + " (read-only: " + list.size() + " problems) — FDNet editor");
+        status.error(list.size() + " problems in " + file + "; the first: " + list.get(0));
+        status.summary(" ");
+        refreshMenus();
+    }
+
+    private void replaceContent(JComponent c) {
+        content.removeAll();
+        content.add(c, BorderLayout.CENTER);
+        content.revalidate();
+        content.repaint();
+    }
+
+    /** Menus follow the history and what is open; not called while dragging (that changes neither). */
+    void refreshMenus() {
+        fileMenu.refresh();
+        editMenu.refresh();
+        viewMenu.refresh();
+    }
+
+    /** Title (with * while unsaved) and the network in numbers. */
+    void refreshTitle() {
+        if (current == null) {
+            return;
+        }
+        String name = current.file() == null ? "untitled" : current.file().getFileName().toString();
+        setTitle((current.unsaved() ? "*" : "") + name + " — FDNet editor");
+        ModuleCounts t = current.editor().network().totalCounts();
+        status.summary(current.editor().network().modules().size() + " modules · " + t.datas() + " Datas · "
+                + t.relations() + " Relations · " + t.readers() + " Readers · " + t.writers() + " Writers");
+    }
+
+    /** Asks before edits are lost; true when the caller may go on (saved, discarded, or nothing to lose). */
+    boolean mayDiscard() {
+        if (current == null || !current.unsaved()) {
+            return true;
+        }
+        int answer = JOptionPane.showConfirmDialog(this, "Save the changes to "
+                        + (current.file() == null ? "this new network" : current.file().getFileName()) + "?",
+                "Unsaved changes", JOptionPane.YES_NO_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE);
+        if (answer == JOptionPane.YES_OPTION) {
+            return fileMenu.save();
+        }
+        return answer == JOptionPane.NO_OPTION;
+    }
+
+    /** Opens one of the thesis's text frames (for the selected node's module) and returns it. */
+    public javax.swing.JDialog openTextFrame(TextFrame which) {
+        return switch (which) {
+            case NETWORK -> editMenu.openNetworkFrame();
+            case MODULE -> editMenu.openModuleFrame(false);
+            case ADVANCED -> editMenu.openModuleFrame(true);
+        };
+    }
+
+    /** The text frames: the Network frame, the Basic and the Advanced Module frame. */
+    public enum TextFrame { NETWORK, MODULE, ADVANCED }
+
+    Path problemFile() {
+        return problemFile;
+    }
+}

@@ -1,4 +1,4 @@
-package org.fdnet.corba.cli;
+package org.fdnet.corba.bench;
 
 import java.util.List;
 import org.fdnet.corba.ClassPolicy;
@@ -11,7 +11,6 @@ import org.fdnet.corba.LocalNetwork;
 import org.fdnet.corba.LocalNetworks;
 import org.fdnet.corba.NamingService;
 import org.fdnet.corba.OrbSettings;
-import org.fdnet.corba.bench.HopStamp;
 import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.Host;
 import org.fdnet.corba.idl.NodeSpec;
@@ -25,14 +24,17 @@ import org.fdnet.netinfo.NodeRef;
  * host runs the single-host engine; bench-b is a separate JVM.
  *
  * <pre>
- *   bench-a (this JVM)          bench-b (child JVM)                               bench-probe (this JVM)
+ *   bench-a (this JVM)          bench-b (child JVM)                               bench-a again
  *   Data ping  ──link 1──▶ stand-in ping ─Reader─▶ Relation stamp ─Writer─▶ Data hop ──link 2──▶ Data hop
+ *                                                                                              (observer)
  *   Data seq   ──link 3──▶ stand-in seq  ─────────────────────────────────────────────link 4──▶ Data seq
+ *                                                                            bench-probe (this JVM, observer)
  * </pre>
  *
- * The hop: a value written into bench-a's {@code ping} (its {@code nanoTime}) reaches the Relation
- * {@code stamp} on bench-b, which writes the one-way time into bench-b's Data {@code hop}. The rate: every
- * value of {@code seq} crosses to bench-b's Data and on to the probe, where order and count are checked.
+ * The round trip: a value written into bench-a's {@code ping} (its {@code nanoTime}) reaches the Relation
+ * {@code stamp} on bench-b, which writes the one-way time into bench-b's Data {@code hop}; that comes back
+ * to bench-a's Data {@code hop} (two hops, two host boundaries). The rate: every value of {@code seq}
+ * crosses to bench-b's Data and on to the probe, where each arrival is counted.
  */
 final class BenchTopology implements AutoCloseable {
     private static final String M = "bench";
@@ -99,10 +101,10 @@ final class BenchTopology implements AutoCloseable {
                 IdlMapping.spec(ConnectionInfo.reader(PING, STAMP)),
                 IdlMapping.spec(ConnectionInfo.writer(STAMP, HOP)),
                 IdlMapping.spec(ConnectionInfo.reader(SEQ, STAMP))});
-        probe.createNode(IdlMapping.spec(M, longData(HOP)));
+        a.createNode(IdlMapping.spec(M, longData(HOP)));
         probe.createNode(IdlMapping.spec(M, longData(SEQ)));
         link(1, PING, a, "bench-a", b, "bench-b", window);
-        link(2, HOP, b, "bench-b", probe, "bench-probe", window);
+        link(2, HOP, b, "bench-b", a, "bench-a", window);
         link(3, SEQ, a, "bench-a", b, "bench-b", window);
         link(4, SEQ, b, "bench-b", probe, "bench-probe", window);
     }
@@ -131,9 +133,9 @@ final class BenchTopology implements AutoCloseable {
         a.network().write(SEQ, value);
     }
 
-    /** Sees each one-way hop time (ns) as bench-b's Data {@code hop} reaches the probe. */
+    /** Sees each one-way hop time (ns) as bench-b's Data {@code hop} comes back to bench-a. */
     AutoCloseable observeHops(LocalNetwork.ValueObserver observer) {
-        return probe.network().observe(HOP, observer);
+        return a.network().observe(HOP, observer);
     }
 
     AutoCloseable observeSeq(LocalNetwork.ValueObserver observer) {
@@ -141,7 +143,12 @@ final class BenchTopology implements AutoCloseable {
     }
 
     String describe() {
-        return "bench-a:ping -> bench-b:stamp -> bench-b:hop -> bench-probe; bench-a:seq -> bench-b:seq -> bench-probe";
+        return "bench-a:ping -> bench-b:stamp -> bench-b:hop -> bench-a:hop; bench-a:seq -> bench-b:seq -> bench-probe";
+    }
+
+    /** The process id of bench-b's JVM (for its CPU time). */
+    long remotePid() {
+        return child.pid();
     }
 
     String[] linkReport() {

@@ -13,7 +13,7 @@ import picocli.CommandLine.Model.CommandSpec;
 /**
  * {@code fdnet bench corba}: one run, all on 127.0.0.1 with a host in a child JVM, measures
  * <ol>
- *   <li>the round trip A → B → back on A (two hops through the real links and a Relation on B) against
+ *   <li>the round trip A → B → back to bench-probe in A's JVM (two hops through the real links and a Relation on B) against
  *       the bare JacORB two-way call (the headline ratio), and the one-way part of it against half the
  *       bare round trip;</li>
  *   <li>the same at realistic gaps (a value every 1, 10 and 100 ms: the links idle in between), each beside
@@ -22,7 +22,7 @@ import picocli.CommandLine.Model.CommandSpec;
  * </ol>
  */
 @Command(name = "corba", mixinStandardHelpOptions = true,
-        description = {"Round trip A -> B -> A through FDNet links vs the bare JacORB two-way call (target <= 1.3x),",
+        description = {"Round trip A -> B -> back to A's JVM through FDNet links vs the bare JacORB two-way call (target <= 1.3x),",
             "the one-way hop vs half the bare round trip, both again at values every 1, 10 and 100 ms",
             "with the CPU used, and the sustained cross-host rate over --seconds, counted on arrival."})
 public final class CorbaBenchmark implements Runnable {
@@ -88,7 +88,7 @@ public final class CorbaBenchmark implements Runnable {
         System.out.println();
         System.out.println("back to back (the next value as soon as the previous one is back):");
         line("bare JacORB two-way call (baseline)", bare);
-        line("FDNet round trip A -> B -> A (2 hops)", hop.roundTrip());
+        line("FDNet round trip A -> B -> back (2 hops)", hop.roundTrip());
         System.out.printf("%-50s %.2f x the bare call (target <= %.1f): %s%n", "ROUND TRIP p50 / bare p50:",
                 p50(hop.roundTrip()) / bareP50, TARGET_RATIO, verdict(p50(hop.roundTrip()) / bareP50 <= TARGET_RATIO));
         line("  bare call interleaved with the round trips", hop.interleavedBare());

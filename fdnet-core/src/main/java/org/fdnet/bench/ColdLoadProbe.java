@@ -1,10 +1,12 @@
 package org.fdnet.bench;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.netinfo.xml.NetworkFileException;
 import org.fdnet.netinfo.xml.NetworkRepository;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -38,8 +40,18 @@ public final class ColdLoadProbe implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        if (!Files.isRegularFile(file)) {
+            spec.commandLine().getErr().println(file + ": no such file");
+            return 1;
+        }
         long start = System.nanoTime();
-        Object loaded = bare ? LoadBenchmark.bareParse(file) : NetworkRepository.load(file);
+        Object loaded;
+        try {
+            loaded = bare ? LoadBenchmark.bareParse(file) : NetworkRepository.load(file);
+        } catch (NetworkFileException e) {
+            spec.commandLine().getErr().println(e.getMessage());
+            return 1;
+        }
         double loadMillis = (System.nanoTime() - start) / 1e6;
         double descendantsMillis = Double.NaN;
         int reached = -1;

@@ -27,6 +27,8 @@ public final class FdnetChildProcess implements AutoCloseable {
     private final Process process;
     private final List<String> output = new ArrayList<>();
     private boolean ready;
+    /** The child's output has ended (it exited, or closed it): no ready marker can come any more. */
+    private boolean outputEnded;
 
     private FdnetChildProcess(String label, Process process) {
         this.label = label;
@@ -80,13 +82,16 @@ public final class FdnetChildProcess implements AutoCloseable {
             LOG.debug("{} output closed: {}", label, e.toString());
         }
         synchronized (this) {
+            outputEnded = true;
             notifyAll();
         }
     }
 
     private synchronized boolean awaitReady(long timeoutMillis) {
         long deadline = System.currentTimeMillis() + timeoutMillis;
-        while (!ready && process.isAlive()) {
+        // Until the output has ended, not until the process has: a child that prints its marker and exits
+        // at once must still be seen as ready once its last lines are read.
+        while (!ready && !outputEnded) {
             long left = deadline - System.currentTimeMillis();
             if (left <= 0) {
                 return false;

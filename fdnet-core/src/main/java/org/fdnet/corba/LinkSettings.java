@@ -12,11 +12,18 @@ package org.fdnet.corba;
  * @param retryMillis how often a broken link tries its peer again
  * @param spinMicros  how long an idle link's sender watches for the next value before it parks (0: never
  *                    spins). Waking a parked thread costs the first value of a burst several µs of latency;
- *                    the watch is bounded and yields the core, so an idle link costs nothing once it expires
+ *                    the watch is bounded (one per idle spell) and yields the core, so an idle link costs
+ *                    nothing once it expires, but each idle spell shorter than the rhythm costs the watch
  */
 public record LinkSettings(int window, int batchMax, int capacity, int retryMillis, int spinMicros) {
-    /** Long enough to catch a request/reply rhythm of a few hundred µs (the hop benchmark's is ~200 µs). */
-    public static final int DEFAULT_SPIN_MICROS = 300;
+    /**
+     * Park at once. The watch only pays off for values closer together than the watch is long; the rates
+     * links carry (a value every 1 ms for a 1 kHz joint loop, 10 ms for a 100 Hz sensor, 100 ms for a 10 Hz
+     * planner) are all farther apart than any watch worth its CPU, so each value would pay the wake-up anyway
+     * plus a watch of CPU (300 µs at 1 kHz: 0.3 of a core per link; {@code fdnet bench corba} measures it).
+     * A link whose values come in bursts closer than a few hundred µs can set a watch.
+     */
+    public static final int DEFAULT_SPIN_MICROS = 0;
 
     public LinkSettings {
         if (window < 1 || window > 64) {

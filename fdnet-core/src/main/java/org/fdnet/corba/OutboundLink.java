@@ -226,6 +226,9 @@ public final class OutboundLink implements AutoCloseable {
      */
     private Batch nextBatch() {
         boolean watched = false;
+        // One watch per idle spell: a watch that ran out without a value ends in a park, or an idle link
+        // would keep one thread spinning (yielding, but burning a core) for as long as it stays idle.
+        boolean mayWatch = true;
         while (true) {
             long watchFrom;
             synchronized (lock) {
@@ -243,7 +246,7 @@ public final class OutboundLink implements AutoCloseable {
                     }
                     return batch;
                 }
-                if (watching || !idleWithRoom() || settings.spinMicros() == 0) {
+                if (watching || !mayWatch || !idleWithRoom() || settings.spinMicros() == 0) {
                     waitingCallers++;
                     try {
                         lock.wait(broken ? settings.retryMillis() : 0);
@@ -256,6 +259,7 @@ public final class OutboundLink implements AutoCloseable {
                 }
                 watching = true;
                 watched = true;
+                mayWatch = false;
                 watchFrom = tailSeq;
             }
             watchForOffer(watchFrom);

@@ -150,4 +150,39 @@ class OutboundLinkTest {
         assertThat(misplaced).isEmpty();
         assertThat(received).hasSize((int) next).doesNotHaveDuplicates();
     }
+
+    @Test
+    void shouldParkAnIdleLinksSendersOnceTheWatchRunsOut() throws Exception {
+        ValueSink sink = ValueSinkHelper.narrow(orb.activate(new ValueSinkPOA() {
+            @Override
+            public long deliver(ValueBatch batch) {
+                return batch.firstSeq + batch.values.length;
+            }
+        }));
+        link = new OutboundLink(71, "test#1#71", "idle", sink, new LinkSettings(2, 8, 1024, 100, 200), SILENT);
+        link.offer(1L);
+        long deadline = System.currentTimeMillis() + 20_000;
+        while (link.acknowledged() < 1 && System.currentTimeMillis() < deadline) {
+            Thread.sleep(5);
+        }
+        assertThat(link.acknowledged()).isEqualTo(1);
+        Thread.sleep(50); // 250 times the 200 µs watch: the link is idle now
+
+        List<String> busy = new CopyOnWriteArrayList<>();
+        for (int sample = 0; sample < 50; sample++) {
+            for (Thread t : Thread.getAllStackTraces().keySet()) {
+                if (t.getName().startsWith("fdnet-link-71-") && t.getState() == Thread.State.RUNNABLE) {
+                    busy.add("sample " + sample + ": " + t.getName());
+                }
+            }
+            Thread.sleep(2);
+        }
+        assertThat(busy).as("sender threads running while the link is idle").isEmpty();
+
+        link.offer(2L); // a parked sender is woken for the next value
+        while (link.acknowledged() < 2 && System.currentTimeMillis() < deadline) {
+            Thread.sleep(5);
+        }
+        assertThat(link.acknowledged()).isEqualTo(2);
+    }
 }

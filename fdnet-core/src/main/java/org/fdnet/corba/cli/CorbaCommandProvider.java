@@ -2,6 +2,7 @@ package org.fdnet.corba.cli;
 
 import java.util.List;
 import org.fdnet.cli.CommandProvider;
+import org.fdnet.corba.bench.CorbaBenchmark;
 
 /** Adds {@code naming}, {@code host} and {@code bench corba} to {@code fdnet}. */
 public final class CorbaCommandProvider implements CommandProvider {

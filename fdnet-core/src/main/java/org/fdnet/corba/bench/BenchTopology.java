@@ -1,4 +1,4 @@
-package org.fdnet.corba.cli;
+package org.fdnet.corba.bench;
 
 import java.util.List;
 import org.fdnet.corba.ClassPolicy;
@@ -11,7 +11,6 @@ import org.fdnet.corba.LocalNetwork;
 import org.fdnet.corba.LocalNetworks;
 import org.fdnet.corba.NamingService;
 import org.fdnet.corba.OrbSettings;
-import org.fdnet.corba.bench.HopStamp;
 import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.Host;
 import org.fdnet.corba.idl.NodeSpec;
@@ -27,12 +26,18 @@ import org.fdnet.netinfo.NodeRef;
  * <pre>
  *   bench-a (this JVM)          bench-b (child JVM)                               bench-probe (this JVM)
  *   Data ping  ──link 1──▶ stand-in ping ─Reader─▶ Relation stamp ─Writer─▶ Data hop ──link 2──▶ Data hop
+ *                                                                                              (observer)
  *   Data seq   ──link 3──▶ stand-in seq  ─────────────────────────────────────────────link 4──▶ Data seq
+ *                                                                                              (observer)
  * </pre>
  *
- * The hop: a value written into bench-a's {@code ping} (its {@code nanoTime}) reaches the Relation
- * {@code stamp} on bench-b, which writes the one-way time into bench-b's Data {@code hop}. The rate: every
- * value of {@code seq} crosses to bench-b's Data and on to the probe, where order and count are checked.
+ * The round trip: a value written into bench-a's {@code ping} (its {@code nanoTime}) reaches the Relation
+ * {@code stamp} on bench-b, which writes the one-way time into bench-b's Data {@code hop}; that comes back
+ * to bench-probe's Data {@code hop}, a host with its own ORB in bench-a's JVM (two hops, two host
+ * boundaries, timed on one clock). It cannot come back to bench-a itself: bench-b's link to bench-a drops
+ * values whose origin is bench-a, and a Relation's output written while bench-a's value is injected (the
+ * Relation runs inline on that thread) is taken for one. The rate: every value of {@code seq}
+ * crosses to bench-b's Data and on to the probe, where each arrival is counted.
  */
 final class BenchTopology implements AutoCloseable {
     private static final String M = "bench";
@@ -131,7 +136,7 @@ final class BenchTopology implements AutoCloseable {
         a.network().write(SEQ, value);
     }
 
-    /** Sees each one-way hop time (ns) as bench-b's Data {@code hop} reaches the probe. */
+    /** Sees each one-way hop time (ns) as bench-b's Data {@code hop} comes back to bench-probe in this JVM. */
     AutoCloseable observeHops(LocalNetwork.ValueObserver observer) {
         return probe.network().observe(HOP, observer);
     }
@@ -141,7 +146,12 @@ final class BenchTopology implements AutoCloseable {
     }
 
     String describe() {
-        return "bench-a:ping -> bench-b:stamp -> bench-b:hop -> bench-probe; bench-a:seq -> bench-b:seq -> bench-probe";
+        return "bench-a:ping -> bench-b:stamp -> bench-b:hop -> bench-probe:hop; bench-a:seq -> bench-b:seq -> bench-probe";
+    }
+
+    /** The process id of bench-b's JVM (for its CPU time). */
+    long remotePid() {
+        return child.pid();
     }
 
     String[] linkReport() {

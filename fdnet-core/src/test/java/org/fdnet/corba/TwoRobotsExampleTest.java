@@ -28,7 +28,7 @@ class TwoRobotsExampleTest {
 
         try (FdnetChildProcess run = FdnetChildProcess.start("run two-robots",
                 List.of("run", "../networks/two-robots.fdn", "--naming", cluster.corbaloc(), "--as", "operator-station",
-                        "--for", "4s"), "running on 3 hosts", 60_000)) {
+                        "--for", "8s"), "running on 3 hosts", 60_000)) {
             assertThat(run.awaitExit(60_000)).isZero();
             List<String> out = run.output();
             assertThat(out).anyMatch(l -> l.startsWith("running on 3 hosts: flyer (2 nodes, 0 stand-ins), "

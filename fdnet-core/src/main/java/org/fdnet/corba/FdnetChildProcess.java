@@ -27,6 +27,7 @@ public final class FdnetChildProcess implements AutoCloseable {
     private final Process process;
     private final List<String> output = new ArrayList<>();
     private boolean ready;
+    private Thread reader;
 
     private FdnetChildProcess(String label, Process process) {
         this.label = label;
@@ -55,6 +56,7 @@ public final class FdnetChildProcess implements AutoCloseable {
         FdnetChildProcess child = new FdnetChildProcess(label, p);
         Thread reader = new Thread(() -> child.pump(readyMarker), "fdnet-child-" + label);
         reader.setDaemon(true);
+        child.reader = reader;
         reader.start();
         if (!child.awaitReady(timeoutMillis)) {
             child.close();
@@ -109,6 +111,7 @@ public final class FdnetChildProcess implements AutoCloseable {
     public int awaitExit(long timeoutMillis) {
         try {
             if (process.waitFor(timeoutMillis, TimeUnit.MILLISECONDS)) {
+                reader.join(5_000); // read the output to its end
                 return process.exitValue();
             }
         } catch (InterruptedException e) {
@@ -137,15 +140,26 @@ public final class FdnetChildProcess implements AutoCloseable {
 
     @Override
     public void close() {
+        stop(5_000);
+    }
+
+    /**
+     * Asks the process to stop (SIGTERM: its shutdown hooks run) and gives it {@code politeMillis} to do so
+     * before ending it forcibly; returns once it is gone and its output has been read to the end.
+     */
+    public void stop(long politeMillis) {
         if (!process.isAlive()) {
             return;
         }
-        process.destroy();
+        // Through the handle: Process.destroy() also closes our end of its output, and the lines a shutdown
+        // hook prints would be lost.
+        process.toHandle().destroy();
         try {
-            if (!process.waitFor(5, TimeUnit.SECONDS)) {
+            if (!process.waitFor(politeMillis, TimeUnit.MILLISECONDS)) {
                 process.destroyForcibly();
                 process.waitFor(5, TimeUnit.SECONDS);
             }
+            reader.join(5_000); // the output's last lines (a shutdown hook's report) are read after the exit
         } catch (InterruptedException e) {
             process.destroyForcibly();
             Thread.currentThread().interrupt();

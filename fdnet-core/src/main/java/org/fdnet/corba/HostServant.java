@@ -104,6 +104,17 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     }
 
     @Override
+    public boolean useLogger(String address) throws Refused {
+        try {
+            return network.useLogger(address);
+        } catch (IllegalArgumentException | UnsupportedOperationException e) {
+            LOG.warn("host {} refused to record with the logger at {}: {}", hostName, address, e.getMessage());
+            throw new Refused("host " + hostName + " cannot record with the logger at " + address + ": "
+                    + e.getMessage());
+        }
+    }
+
+    @Override
     public String[] nodes() {
         return network.nodes().stream().map(NodeRef::toString).toArray(String[]::new);
     }

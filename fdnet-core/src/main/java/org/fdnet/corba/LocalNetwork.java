@@ -67,6 +67,18 @@ public interface LocalNetwork {
     /** Tells {@code observer} every value of {@code data} from now on, in order; close to stop. */
     AutoCloseable observe(NodeRef data, ValueObserver observer);
 
+    /**
+     * Records this host's events with the logger at {@code hostPort} from now on; {@code false} when the
+     * host already records with a logger (nothing changes).
+     *
+     * @throws UnsupportedOperationException when this engine has no events to record
+     * @throws IllegalArgumentException when {@code hostPort} is not {@code HOST:PORT}
+     */
+    default boolean useLogger(String hostPort) {
+        throw new UnsupportedOperationException("this host's engine (" + getClass().getSimpleName()
+                + ") records no events");
+    }
+
     /** Receives every value of one Data on the thread that set it; must not block for long. */
     @FunctionalInterface
     interface ValueObserver {

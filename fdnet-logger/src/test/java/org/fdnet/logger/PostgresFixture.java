@@ -87,6 +87,16 @@ public final class PostgresFixture implements AutoCloseable {
         }
     }
 
+    /** The first column of the first row of {@code sql}, as text. */
+    public String text(String sql) throws SQLException {
+        try (Connection c = target().open(); Statement s = c.createStatement(); ResultSet rs = s.executeQuery(sql)) {
+            if (!rs.next()) {
+                throw new SQLException("no row: " + sql);
+            }
+            return rs.getString(1);
+        }
+    }
+
     public void stopDatabase() throws IOException, SQLException {
         if (embedded != null) {
             embedded.close();

@@ -12,7 +12,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.fdnet.event.EventSink;
 import org.fdnet.event.NetworkEvent;
-import org.fdnet.event.client.ClientStatus;
+import org.fdnet.event.client.CommitReport;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.netinfo.ModuleInfo;
@@ -114,7 +114,8 @@ public final class RunCommand implements Callable<Integer> {
         if (distribution.appliesTo(definition)) {
             EventSink events = loggerClient == null ? counter : both(counter, loggerClient);
             try {
-                return distribution.run(file, definition, duration, allowedRoots, sets, loads, events, out, err);
+                return distribution.run(file, definition, duration, allowedRoots, sets, loads, logger, events, out,
+                        err);
             } finally {
                 closeLogger(out, loggerClient);
             }
@@ -209,13 +210,7 @@ public final class RunCommand implements Callable<Integer> {
         out.printf("waiting for the logger at %s to commit the run's events ...%n", logger);
         out.flush();
         client.close();
-        ClientStatus s = client.status();
-        if (s.acked() == s.accepted() && s.lost() == 0) {
-            out.printf(Locale.ROOT, "logger: all %,d events of run %s committed%n", s.accepted(), client.run());
-        } else {
-            out.printf(Locale.ROOT, "logger: %,d of %,d events of run %s committed, %,d not confirmed, %,d LOST"
-                    + " (journal full)%n", s.acked(), s.accepted(), client.run(), s.accepted() - s.acked(), s.lost());
-        }
+        out.println(CommitReport.of(client));
         out.flush();
     }
 

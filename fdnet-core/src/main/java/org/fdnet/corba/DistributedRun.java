@@ -17,6 +17,7 @@ import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.cli.ControlCommands;
 import org.fdnet.runtime.cli.ValueAssignment;
 import org.fdnet.runtime.Placement;
 
@@ -100,6 +101,7 @@ public final class DistributedRun {
             if (!applySets(request.sets(), plan, deployment, err)) {
                 return 2;
             }
+            new ControlCommands(new DistributedControl(deployment), out).readFrom(System.in);
             long end = request.duration() == null ? Long.MAX_VALUE : started + request.duration().toNanos();
             while (System.nanoTime() < end) {
                 long wait = Math.min(TimeUnit.SECONDS.toNanos(1), end - System.nanoTime());

@@ -103,6 +103,16 @@ public final class FdnetChildProcess implements AutoCloseable {
         return ready;
     }
 
+    /** Writes {@code line} to the process's standard input (e.g. a command for {@code fdnet run}). */
+    public void send(String line) {
+        try {
+            process.getOutputStream().write((line + System.lineSeparator()).getBytes(StandardCharsets.UTF_8));
+            process.getOutputStream().flush();
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot write to " + label + "'s standard input", e);
+        }
+    }
+
     public synchronized List<String> output() {
         return List.copyOf(output);
     }

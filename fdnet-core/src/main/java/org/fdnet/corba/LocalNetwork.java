@@ -2,9 +2,11 @@ package org.fdnet.corba;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.Controller;
 
 /**
  * What a host needs from the engine that runs its share of a network: the seam between CORBA
@@ -77,6 +79,14 @@ public interface LocalNetwork {
     default boolean useLogger(String hostPort) {
         throw new UnsupportedOperationException("this host's engine (" + getClass().getSimpleName()
                 + ") records no events");
+    }
+
+    /**
+     * The engine's controller, through which live changes (hold, resume, parameters, values as text) are
+     * executed here; empty when this engine takes no live changes.
+     */
+    default Optional<Controller> controller() {
+        return Optional.empty();
     }
 
     /** Receives every value of one Data on the thread that set it; must not block for long. */

@@ -85,6 +85,11 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
         return Optional.ofNullable(logger);
     }
 
+    @Override
+    public Optional<Controller> controller() {
+        return Optional.of(controller);
+    }
+
     public RuntimeNetwork runtime() {
         return runtime;
     }

@@ -46,7 +46,9 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "run", mixinStandardHelpOptions = true,
         description = {"Run a network; print progress each second and a summary at the end.",
-                "Nodes whose <host> names another host run there (fdnet host --name H); see docs/distribution.md."})
+                "Nodes whose <host> names another host run there (fdnet host --name H); see docs/distribution.md.",
+                "While it runs it takes commands on standard input: load, unload, hold, resume MODULE;"
+                        + " set [MODULE/]NODE/PARAM=VALUE; send [MODULE/]NODE=VALUE; help."})
 public final class RunCommand implements Callable<Integer> {
     @Parameters(paramLabel = "FILE", description = "the .fdn network definition")
     Path file;
@@ -163,6 +165,7 @@ public final class RunCommand implements Callable<Integer> {
             if (!applyRequests(controller, err)) {
                 return 2;
             }
+            new ControlCommands(controller, out).readFrom(System.in);
             long end = duration == null ? Long.MAX_VALUE : started + duration.toNanos();
             while (System.nanoTime() < end) {
                 long waitNanos = Math.min(TimeUnit.SECONDS.toNanos(1), end - System.nanoTime());

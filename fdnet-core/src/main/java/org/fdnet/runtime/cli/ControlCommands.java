@@ -6,6 +6,7 @@ import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
+import java.util.Set;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.ChangeOutcome;
@@ -34,6 +35,8 @@ public final class ControlCommands {
             "  set [MODULE/]NODE/PARAM=VALUE set a node parameter (a bare NODE is in main)",
             "  send [MODULE/]NODE=VALUE      write a value into a Data",
             "  help                          this list");
+
+    private static final Set<String> VERBS = Set.of("load", "unload", "hold", "resume", "set", "send");
 
     private final NetworkControl control;
     private final PrintWriter out;
@@ -78,6 +81,9 @@ public final class ControlCommands {
         if (verb.equals("help")) {
             return HELP;
         }
+        if (!VERBS.contains(verb)) {
+            return "error: unknown command '" + verb + "' (type help)";
+        }
         if (arg.isEmpty()) {
             return "error: " + verb + " needs an argument (type help)";
         }
@@ -92,11 +98,8 @@ public final class ControlCommands {
                     ValueAssignment a = ValueAssignment.parse(arg);
                     yield control.send(a.data(), a.value());
                 }
-                default -> null;
+                default -> throw new IllegalStateException("verb " + verb + " listed but not handled");
             };
-            if (o == null) {
-                return "error: unknown command '" + verb + "' (type help)";
-            }
             return o.executed() ? "ok: " + o.description() : "refused: " + o.description() + ": " + o.reason();
         } catch (IllegalArgumentException e) {
             return "error: " + text + ": " + e.getMessage();

@@ -45,6 +45,7 @@ class ControlCommandsTest {
             assertThat(commands.execute("set Walk/walk")).startsWith("error: ").contains("[MODULE/]NODE/PARAM=VALUE");
             assertThat(commands.execute("frobnicate Walk")).startsWith("error: unknown command 'frobnicate'");
             assertThat(commands.execute("hold")).startsWith("error: hold needs an argument");
+            assertThat(commands.execute("bogus")).startsWith("error: unknown command 'bogus'");
             assertThat(commands.execute("help")).contains("hold MODULE").contains("send [MODULE/]NODE=VALUE");
             assertThat(commands.execute("   ")).isNull();
         }

@@ -80,6 +80,10 @@ class LiveChangesAcrossHostsTest {
         assertThat(awaitLine(l -> l.startsWith("refused: hold Nowhere"))).contains("runs on no host");
         run.send("set Survey/period=50");
         assertThat(awaitLine(l -> l.contains("main/Survey:period=50"))).startsWith("ok: set main/Survey:period=50 on flyer");
+        run.send("send Certainty=0.5");
+        assertThat(awaitLine(l -> l.contains("send main/Certainty=0.5"))).isEqualTo("ok: send main/Certainty=0.5 on crawler");
+        run.send("send Certainty=not-a-number");
+        assertThat(awaitLine(l -> l.contains("send main/Certainty=not-a-number"))).startsWith("refused:");
         run.send("send Ghost=1");
         assertThat(awaitLine(l -> l.contains("send main/Ghost=1"))).startsWith("refused:").contains("runs on no host");
         run.send("help");

@@ -12,10 +12,12 @@ import java.util.Set;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.fdnet.event.EventSink;
+import org.fdnet.event.client.CommitReport;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.cli.ControlCommands;
 import org.fdnet.runtime.cli.ValueAssignment;
 import org.fdnet.runtime.Placement;
 
@@ -27,7 +29,8 @@ import org.fdnet.runtime.Placement;
 public final class DistributedRun {
     /** What the command line gives a distributed run. */
     public record Request(Path file, NetworkInfo definition, Duration duration, List<Path> allowedRoots,
-                          String namingCorbaloc, String localHostName, List<String> sets, List<String> loads) {
+                          String namingCorbaloc, String localHostName, List<String> sets, List<String> loads,
+                          String loggerAddress) {
     }
 
     private DistributedRun() {
@@ -81,7 +84,7 @@ public final class DistributedRun {
         try {
             deployment = NetworkDeployment.start(plan, HostDirectory.connect(local.orb()),
                     Map.of(request.localHostName(), local.reference()), new PrintingListener(out, started), events,
-                    LinkSettings.defaults().window(), 10_000, 250);
+                    LinkSettings.defaults().window(), 10_000, 250, request.loggerAddress());
         } catch (DeploymentException | HostUnreachableException e) {
             err.println(request.file() + ": the network cannot be distributed: " + e.getMessage());
             err.flush();
@@ -98,6 +101,7 @@ public final class DistributedRun {
             if (!applySets(request.sets(), plan, deployment, err)) {
                 return 2;
             }
+            new ControlCommands(new DistributedControl(deployment), out).readFrom(System.in);
             long end = request.duration() == null ? Long.MAX_VALUE : started + request.duration().toNanos();
             while (System.nanoTime() < end) {
                 long wait = Math.min(TimeUnit.SECONDS.toNanos(1), end - System.nanoTime());
@@ -110,6 +114,11 @@ public final class DistributedRun {
             summary(out, deployment, local, started);
             deployment.close();
             local.close();
+            if (local.network() instanceof RuntimeLocalNetwork engine) {
+                engine.logger().ifPresent(c -> out.println("host " + request.localHostName() + ": "
+                        + CommitReport.of(c)));
+                out.flush();
+            }
             try {
                 Runtime.getRuntime().removeShutdownHook(hook);
             } catch (IllegalStateException shuttingDown) {

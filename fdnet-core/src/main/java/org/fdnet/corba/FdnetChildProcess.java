@@ -29,6 +29,7 @@ public final class FdnetChildProcess implements AutoCloseable {
     private boolean ready;
     /** The child's output has ended (it exited, or closed it): no ready marker can come any more. */
     private boolean outputEnded;
+    private Thread reader;
 
     private FdnetChildProcess(String label, Process process) {
         this.label = label;
@@ -57,6 +58,7 @@ public final class FdnetChildProcess implements AutoCloseable {
         FdnetChildProcess child = new FdnetChildProcess(label, p);
         Thread reader = new Thread(() -> child.pump(readyMarker), "fdnet-child-" + label);
         reader.setDaemon(true);
+        child.reader = reader;
         reader.start();
         if (!child.awaitReady(timeoutMillis)) {
             child.close();
@@ -106,6 +108,16 @@ public final class FdnetChildProcess implements AutoCloseable {
         return ready;
     }
 
+    /** Writes {@code line} to the process's standard input (e.g. a command for {@code fdnet run}). */
+    public void send(String line) {
+        try {
+            process.getOutputStream().write((line + System.lineSeparator()).getBytes(StandardCharsets.UTF_8));
+            process.getOutputStream().flush();
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot write to " + label + "'s standard input", e);
+        }
+    }
+
     public synchronized List<String> output() {
         return List.copyOf(output);
     }
@@ -114,6 +126,7 @@ public final class FdnetChildProcess implements AutoCloseable {
     public int awaitExit(long timeoutMillis) {
         try {
             if (process.waitFor(timeoutMillis, TimeUnit.MILLISECONDS)) {
+                reader.join(5_000); // read the output to its end
                 return process.exitValue();
             }
         } catch (InterruptedException e) {
@@ -142,15 +155,26 @@ public final class FdnetChildProcess implements AutoCloseable {
 
     @Override
     public void close() {
+        stop(5_000);
+    }
+
+    /**
+     * Asks the process to stop (SIGTERM: its shutdown hooks run) and gives it {@code politeMillis} to do so
+     * before ending it forcibly; returns once it is gone and its output has been read to the end.
+     */
+    public void stop(long politeMillis) {
         if (!process.isAlive()) {
             return;
         }
-        process.destroy();
+        // Through the handle: Process.destroy() also closes our end of its output, and the lines a shutdown
+        // hook prints would be lost.
+        process.toHandle().destroy();
         try {
-            if (!process.waitFor(5, TimeUnit.SECONDS)) {
+            if (!process.waitFor(politeMillis, TimeUnit.MILLISECONDS)) {
                 process.destroyForcibly();
                 process.waitFor(5, TimeUnit.SECONDS);
             }
+            reader.join(5_000); // the output's last lines (a shutdown hook's report) are read after the exit
         } catch (InterruptedException e) {
             process.destroyForcibly();
             Thread.currentThread().interrupt();

@@ -7,6 +7,7 @@ import java.util.NoSuchElementException;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
 import org.fdnet.corba.idl.ChangeKind;
+import org.fdnet.corba.idl.ChangeRequest;
 import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.HostPOA;
 import org.fdnet.corba.idl.NetworkListener;
@@ -43,6 +44,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     private final LinkSettings linkSettings;
     private final ORB orb;
     private final ChangeNotifier notifier;
+    private final LiveChanges liveChanges;
     private final Map<Long, InboundLink> inbound = new ConcurrentHashMap<>();
     private final Map<Long, Forwarding> outbound = new ConcurrentHashMap<>();
     private final AtomicLong retiredReceived = new AtomicLong();
@@ -59,6 +61,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         this.linkSettings = linkSettings;
         this.orb = orb;
         this.notifier = new ChangeNotifier(hostName);
+        this.liveChanges = new LiveChanges(hostName, network);
     }
 
     @Override
@@ -101,6 +104,39 @@ public final class HostServant extends HostPOA implements AutoCloseable {
             throw new UnknownNode(id);
         }
         notifier.publish(ChangeKind.NODE_DESTROYED, ref.toString());
+    }
+
+    @Override
+    public boolean useLogger(String address) throws Refused {
+        try {
+            return network.useLogger(address);
+        } catch (IllegalArgumentException | UnsupportedOperationException e) {
+            LOG.warn("host {} refused to record with the logger at {}: {}", hostName, address, e.getMessage());
+            throw new Refused("host " + hostName + " cannot record with the logger at " + address + ": "
+                    + e.getMessage());
+        }
+    }
+
+    @Override
+    public String prepareChange(ChangeRequest change) {
+        String refusal = liveChanges.prepare(change);
+        if (!refusal.isEmpty()) {
+            LOG.info("host {} refused change {}: {}", hostName, change.id, refusal);
+        }
+        return refusal;
+    }
+
+    @Override
+    public void commitChange(long id) throws Refused {
+        String failure = liveChanges.commit(id);
+        if (failure != null) {
+            throw new Refused(failure);
+        }
+    }
+
+    @Override
+    public void abortChange(long id) {
+        liveChanges.abort(id);
     }
 
     @Override

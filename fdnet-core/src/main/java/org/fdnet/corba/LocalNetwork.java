@@ -2,9 +2,11 @@ package org.fdnet.corba;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.Controller;
 
 /**
  * What a host needs from the engine that runs its share of a network: the seam between CORBA
@@ -66,6 +68,26 @@ public interface LocalNetwork {
 
     /** Tells {@code observer} every value of {@code data} from now on, in order; close to stop. */
     AutoCloseable observe(NodeRef data, ValueObserver observer);
+
+    /**
+     * Records this host's events with the logger at {@code hostPort} from now on; {@code false} when the
+     * host already records with a logger (nothing changes).
+     *
+     * @throws UnsupportedOperationException when this engine has no events to record
+     * @throws IllegalArgumentException when {@code hostPort} is not {@code HOST:PORT}
+     */
+    default boolean useLogger(String hostPort) {
+        throw new UnsupportedOperationException("this host's engine (" + getClass().getSimpleName()
+                + ") records no events");
+    }
+
+    /**
+     * The engine's controller, through which live changes (hold, resume, parameters, values as text) are
+     * executed here; empty when this engine takes no live changes.
+     */
+    default Optional<Controller> controller() {
+        return Optional.empty();
+    }
 
     /** Receives every value of one Data on the thread that set it; must not block for long. */
     @FunctionalInterface

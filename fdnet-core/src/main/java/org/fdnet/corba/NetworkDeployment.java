@@ -57,6 +57,8 @@ public final class NetworkDeployment implements AutoCloseable {
     private final Map<String, Long> recoveryMillis = new ConcurrentHashMap<>();
     private final ScheduledExecutorService watcher;
 
+    private String loggerAddress; // set once, before the first share is deployed
+
     private NetworkDeployment(DeploymentPlan plan, HostDirectory directory, DeploymentListener listener,
                               EventSink events, int window) {
         this.plan = plan;
@@ -81,7 +83,20 @@ public final class NetworkDeployment implements AutoCloseable {
     public static NetworkDeployment start(DeploymentPlan plan, HostDirectory directory, Map<String, Host> known,
                                           DeploymentListener listener, EventSink events, int window,
                                           long hostWaitMillis, long pingMillis) throws DeploymentException {
+        return start(plan, directory, known, listener, events, window, hostWaitMillis, pingMillis, null);
+    }
+
+    /**
+     * As above; when {@code loggerAddress} ({@code HOST:PORT}) is given, every host is told to record its
+     * events with that logger before its share is created (and again when it comes back after a restart),
+     * so the logger learns every node's name.
+     */
+    public static NetworkDeployment start(DeploymentPlan plan, HostDirectory directory, Map<String, Host> known,
+                                          DeploymentListener listener, EventSink events, int window,
+                                          long hostWaitMillis, long pingMillis, String loggerAddress)
+            throws DeploymentException {
         NetworkDeployment d = new NetworkDeployment(plan, directory, listener, events, window);
+        d.loggerAddress = loggerAddress;
         d.hosts.putAll(known);
         try {
             d.resolveAll(hostWaitMillis);
@@ -122,6 +137,9 @@ public final class NetworkDeployment implements AutoCloseable {
     private void deployShare(String hostName, Host host) throws DeploymentException {
         DeploymentPlan.HostShare share = plan.shareOf(hostName);
         try {
+            if (loggerAddress != null && host.useLogger(loggerAddress)) {
+                LOG.info("host {} records its events with the logger at {}", hostName, loggerAddress);
+            }
             for (DeploymentPlan.StandIn s : share.standIns()) {
                 host.createStandIn(IdlMapping.spec(s.data().module(), s.node()), s.homeHost());
             }

@@ -4,8 +4,12 @@ import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.NoSuchElementException;
+import java.util.Optional;
 import java.util.Set;
 import org.fdnet.event.ValueType;
+import org.fdnet.event.client.CommitReport;
+import org.fdnet.event.client.LoggerClient;
+import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
@@ -20,6 +24,8 @@ import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.RuntimeOptions;
 import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.runtime.Value;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * A host's share of a distributed network, run by the single-host engine ({@link RuntimeNetwork}).
@@ -32,11 +38,13 @@ import org.fdnet.runtime.Value;
  * where the value came from and a link never echoes a value back to its sender.
  */
 public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(RuntimeLocalNetwork.class);
     private static final ThreadLocal<String> ORIGIN = new ThreadLocal<>();
 
     private final String hostName;
     private final RuntimeNetwork runtime;
     private final Controller controller;
+    private LoggerClient logger; // guarded by this
 
     private RuntimeLocalNetwork(String hostName, RuntimeNetwork runtime) {
         this.hostName = hostName;
@@ -52,6 +60,34 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
         } catch (RuntimeStartException e) {
             throw new IllegalStateException("the engine of host " + hostName + " did not start: " + e.problems(), e);
         }
+    }
+
+    /**
+     * Sends every event of this host's engine from now on to the logger at {@code hostPort}, through a
+     * {@link LoggerClient} of its own (memory, journal, exactly-once), as core {@code fdnet host NAME}. A host
+     * records with one logger: when it already does, the call changes nothing and returns {@code false}.
+     *
+     * @throws IllegalArgumentException when {@code hostPort} is not {@code HOST:PORT}
+     */
+    @Override
+    public synchronized boolean useLogger(String hostPort) {
+        if (logger != null) {
+            return false;
+        }
+        logger = new LoggerClient(LoggerClientSettings.parseAddress(hostPort, "fdnet host " + hostName));
+        runtime.addSink(logger);
+        LOG.info("host {} records its events with the logger at {} (run {})", hostName, hostPort, logger.run());
+        return true;
+    }
+
+    /** The client this host records with, if any (its status says what the logger committed). */
+    public synchronized Optional<LoggerClient> logger() {
+        return Optional.ofNullable(logger);
+    }
+
+    @Override
+    public Optional<Controller> controller() {
+        return Optional.of(controller);
     }
 
     public RuntimeNetwork runtime() {
@@ -220,5 +256,13 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
     @Override
     public void close() {
         runtime.close();
+        LoggerClient client;
+        synchronized (this) {
+            client = logger;
+        }
+        if (client != null) {
+            client.close(); // bounded: waits for the logger's commits at most the client's flush timeout
+            LOG.info("host {}: {}", hostName, CommitReport.of(client));
+        }
     }
 }

@@ -25,5 +25,15 @@
  * {@link org.fdnet.corba.OrbSettings} (every JacORB key); {@link org.fdnet.corba.NamingService} runs
  * JacORB's NameServer; {@link org.fdnet.corba.HostProcess} is one host; {@link org.fdnet.corba.LocalNetwork}
  * is the seam to the engine that runs a host's nodes.
+ *
+ * <p>Live changes: {@link org.fdnet.corba.DistributedControl} (the {@link org.fdnet.runtime.NetworkControl} of a
+ * distributed run) prepares a change on every host it touches and commits it only when none refused; each
+ * host's {@link org.fdnet.corba.LiveChanges} checks and executes it through its engine's Controller.
+ * <pre>
+ *   "hold main" ─▶ DistributedControl ─prepareChange─▶ Host flyer, Host crawler … ─▶ all ""? ─commitChange─▶ each
+ *                                                                           a reason? ─abortChange──▶ the prepared
+ * </pre>
+ * Logging: every host records its engine's events with the logger through its own LoggerClient
+ * ({@code fdnet host --logger}, or the address {@code useLogger} hands over at deployment).
  */
 package org.fdnet.corba;

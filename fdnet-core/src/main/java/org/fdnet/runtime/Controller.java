@@ -14,7 +14,7 @@ import org.fdnet.netinfo.NodeRef;
  * the network exactly as it was. Every settled request is also told to the {@link ChangeListener}s.
  * All methods are thread-safe; a Relation may call them (through its Servants) from {@code compute}.
  */
-public interface Controller {
+public interface Controller extends NetworkControl {
     /** Applies an edit of the definition and makes the running network match it. */
     ChangeOutcome apply(String description, NetworkEdit edit);
 
@@ -46,6 +46,18 @@ public interface Controller {
 
     /** {@link #setValue(NodeRef, Value)} from text in the Data's own type ({@code 0.5}, {@code 1,2,3}, ...). */
     void setValue(NodeRef data, String text);
+
+    /** {@link #setValue(NodeRef, String)} as a change request: refused with the reason instead of thrown. */
+    @Override
+    default ChangeOutcome send(NodeRef data, String text) {
+        String description = "send " + data + "=" + text;
+        try {
+            setValue(data, text);
+            return ChangeOutcome.executed(description);
+        } catch (IllegalArgumentException e) {
+            return ChangeOutcome.failed(description, e.getMessage());
+        }
+    }
 
     /** The Data's current value, or {@code null} when it is not running here. */
     Value value(NodeRef data);

@@ -1,5 +1,7 @@
 package org.fdnet.testing;
 
+import java.io.ByteArrayInputStream;
+import java.io.InputStream;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import org.fdnet.cli.FdnetCommand;
@@ -14,7 +16,15 @@ public final class CliRun {
         CommandLine cli = FdnetCommand.commandLine();
         cli.setOut(new PrintWriter(output, true));
         cli.setErr(new PrintWriter(output, true));
-        return cli.execute(args);
+        // fdnet run reads commands on standard input; in-process it gets none, so it never reads the test
+        // JVM's own standard input (surefire's command channel to its forked JVM).
+        InputStream stdin = System.in;
+        System.setIn(new ByteArrayInputStream(new byte[0]));
+        try {
+            return cli.execute(args);
+        } finally {
+            System.setIn(stdin);
+        }
     }
 
     public String output() {

@@ -114,6 +114,14 @@ public final class NetworkStateLogger implements AutoCloseable {
         return cache;
     }
 
+    /** After the writer reported the database down (its attempts used up): try the database again. */
+    public void retryDatabase() {
+        BatchWriter w = writer;
+        if (w != null) {
+            w.retryDatabase();
+        }
+    }
+
     public BatchWriter writer() {
         return writer;
     }

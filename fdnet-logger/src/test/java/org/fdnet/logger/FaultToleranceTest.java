@@ -60,6 +60,70 @@ class FaultToleranceTest {
     }
 
     @Test
+    void shouldReportTheDatabaseDownAfterItsAttemptsAndRetryOnlyWhenToldTo() throws Exception {
+        LoggerConfig config = database.fixture().loggerConfig().set(LoggerSetting.WRITER_RECONNECT_ATTEMPTS, "3")
+                .set(LoggerSetting.WRITER_RECONNECT_DELAY, "100");
+        try (NetworkStateLogger logger = new NetworkStateLogger(config)) {
+            logger.start();
+            try (LoggerClient client = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(),
+                    "attempts-core").withJournal(folder.resolve("j-attempts"), 64 << 20))) {
+                Producer producer = new Producer(new TestEvents(8), client, 20);
+                waitForCommits(client, 500);
+                database.fixture().stopDatabase();
+                long deadline = System.currentTimeMillis() + 60_000;
+                while (!logger.writer().databaseState().startsWith("DOWN")) {
+                    assertThat(System.currentTimeMillis()).as(logger.writer().databaseState()).isLessThan(deadline);
+                    Thread.sleep(50);
+                }
+                assertThat(logger.writer().databaseState()).contains(", 3 attempts; not retrying until told to");
+                // Down means no more attempts, even once the database is back: ten delays later still 3.
+                database.fixture().startDatabase();
+                Thread.sleep(1000);
+                assertThat(logger.writer().databaseState()).contains(", 3 attempts; not retrying until told to");
+                assertThat(client.lostEvents()).isZero();
+
+                logger.retryDatabase();
+                long produced = producer.stop();
+                assertThat(client.flush(90_000)).isTrue();
+                assertThat(client.lostEvents()).isZero();
+                assertThat(storedEvents(runOf(client))).isEqualTo(produced);
+                assertThat(logger.writer().databaseState()).isEqualTo("connected");
+            }
+        }
+    }
+
+    @Test
+    void shouldStopTheLoggerAtTheFirstLossWithoutReconnectAndLetTheNextLoggerStoreEverything() throws Exception {
+        int receiver = freePort();
+        LoggerConfig config = database.fixture().loggerConfig().set(LoggerSetting.WRITER_RECONNECT, "false")
+                .set(LoggerSetting.RECEIVER_PORT, Integer.toString(receiver));
+        try (LoggerClient client = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", receiver,
+                "no-reconnect-core").withJournal(folder.resolve("j-no-reconnect"), 64 << 20))) {
+            Producer producer;
+            try (NetworkStateLogger first = new NetworkStateLogger(config)) {
+                first.start();
+                producer = new Producer(new TestEvents(8), client, 20);
+                waitForCommits(client, 500);
+                database.fixture().stopDatabase();
+                long deadline = System.currentTimeMillis() + 60_000;
+                while (first.running()) {
+                    assertThat(System.currentTimeMillis()).as("the logger gives up").isLessThan(deadline);
+                    Thread.sleep(50);
+                }
+                assertThat(first.writer().databaseState()).contains("1 attempts");
+            }
+            database.fixture().startDatabase();
+            try (NetworkStateLogger second = new NetworkStateLogger(config)) {
+                second.start();
+                long produced = producer.stop();
+                assertThat(client.flush(90_000)).isTrue();
+                assertThat(client.lostEvents()).isZero();
+                assertThat(storedEvents(runOf(client))).isEqualTo(produced);
+            }
+        }
+    }
+
+    @Test
     void shouldPushBackOnTheCoreWithinItsCapacityWhileTheDatabaseIsDownAndLoseNothing() throws Exception {
         LoggerConfig config = database.fixture().loggerConfig().set(LoggerSetting.MEMORY_CAPACITY_MB, "1");
         long capacity = config.cacheCapacityBytes();

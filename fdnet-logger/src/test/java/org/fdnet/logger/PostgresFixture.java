@@ -77,13 +77,25 @@ public final class PostgresFixture implements AutoCloseable {
         return new LoggerConfig().set(LoggerSetting.DATABASE_EMBEDDED, "false").set(LoggerSetting.DATABASE_URL, t.url())
                 .set(LoggerSetting.DATABASE_USER, t.user()).set(LoggerSetting.DATABASE_PASSWORD, t.password())
                 .set(LoggerSetting.RECEIVER_PORT, "0").set(LoggerSetting.SENDER_PORT, "0")
-                .set(LoggerSetting.WRITER_BATCH_TIMEOUT, "200").set(LoggerSetting.WRITER_RECONNECT_DELAY, "200");
+                .set(LoggerSetting.WRITER_BATCH_TIMEOUT, "200").set(LoggerSetting.WRITER_RECONNECT_DELAY, "200")
+                // outage tests expect the writer to retry through the whole outage, not to report it down
+                .set(LoggerSetting.WRITER_RECONNECT_ATTEMPTS, "100000");
     }
 
     public long count(String sql) throws SQLException {
         try (Connection c = target().open(); Statement s = c.createStatement(); ResultSet rs = s.executeQuery(sql)) {
             rs.next();
             return rs.getLong(1);
+        }
+    }
+
+    /** The first column of the first row of {@code sql}, as text. */
+    public String text(String sql) throws SQLException {
+        try (Connection c = target().open(); Statement s = c.createStatement(); ResultSet rs = s.executeQuery(sql)) {
+            if (!rs.next()) {
+                throw new SQLException("no row: " + sql);
+            }
+            return rs.getString(1);
         }
     }
 

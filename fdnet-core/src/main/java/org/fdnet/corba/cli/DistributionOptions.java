@@ -28,9 +28,10 @@ public final class DistributionOptions {
     }
 
     public int run(Path file, NetworkInfo definition, Duration duration, List<Path> allowedRoots, List<String> sets,
-                   List<String> loads, EventSink events, PrintWriter out, PrintWriter err) throws InterruptedException {
+                   List<String> loads, String loggerAddress, EventSink events, PrintWriter out, PrintWriter err)
+            throws InterruptedException {
         String name = localHostName != null ? localHostName : "run-" + ProcessHandle.current().pid();
         return DistributedRun.run(new DistributedRun.Request(file, definition, duration, allowedRoots,
-                naming.corbaloc(), name, sets, loads), events, out, err);
+                naming.corbaloc(), name, sets, loads, loggerAddress), events, out, err);
     }
 }

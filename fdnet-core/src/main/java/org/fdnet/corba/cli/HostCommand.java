@@ -9,6 +9,8 @@ import org.fdnet.corba.HostProcess;
 import org.fdnet.corba.HostUnreachableException;
 import org.fdnet.corba.LinkSettings;
 import org.fdnet.corba.LocalNetworks;
+import org.fdnet.corba.RuntimeLocalNetwork;
+import org.fdnet.event.client.CommitReport;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -28,6 +30,11 @@ public final class HostCommand implements Callable<Integer> {
     @Option(names = "--allow-path", description = "a folder whose node classes remote creates may load (repeatable)")
     List<Path> allowedPaths = new ArrayList<>();
 
+    @Option(names = "--logger", paramLabel = "HOST:PORT",
+            description = "record this host's events with the network state logger at HOST:PORT (see fdnet logger);"
+                    + " without it the host records with the logger fdnet run --logger hands over")
+    String logger;
+
     @Mixin
     NamingOptions naming;
 
@@ -37,15 +44,27 @@ public final class HostCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         HostProcess host;
+        RuntimeLocalNetwork engine = LocalNetworks.forHost(name, allowedPaths);
         try {
-            host = HostProcess.start(name, naming.orbSettings().withPort(port),
-                    LocalNetworks.forHost(name, allowedPaths), new ClassPolicy(allowedPaths), LinkSettings.defaults());
+            if (logger != null) {
+                engine.useLogger(logger);
+            }
+            host = HostProcess.start(name, naming.orbSettings().withPort(port), engine, new ClassPolicy(allowedPaths),
+                    LinkSettings.defaults());
         } catch (HostUnreachableException | IllegalArgumentException | IllegalStateException e) {
+            engine.close();
             spec.commandLine().getErr().println("fdnet host " + name + ": " + e.getMessage()
                     + (e instanceof HostUnreachableException ? " (is `fdnet naming` running there?)" : ""));
             return 1;
         }
-        Runtime.getRuntime().addShutdownHook(new Thread(host::close, "fdnet-host-shutdown"));
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            host.close();
+            // the engine closed its logger client: say what the logger committed (tests count it)
+            engine.logger().ifPresent(c -> {
+                System.out.println("fdnet host " + name + ": " + CommitReport.of(c));
+                System.out.flush();
+            });
+        }, "fdnet-host-shutdown"));
         System.out.println("fdnet host " + name + " ready (naming " + naming.corbaloc() + ")");
         System.out.flush();
         NamingCommand.awaitStop();

@@ -12,7 +12,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.fdnet.event.EventSink;
 import org.fdnet.event.NetworkEvent;
-import org.fdnet.event.client.ClientStatus;
+import org.fdnet.event.client.CommitReport;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.netinfo.ModuleInfo;
@@ -46,7 +46,9 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "run", mixinStandardHelpOptions = true,
         description = {"Run a network; print progress each second and a summary at the end.",
-                "Nodes whose <host> names another host run there (fdnet host --name H); see docs/distribution.md."})
+                "Nodes whose <host> names another host run there (fdnet host --name H); see docs/distribution.md.",
+                "While it runs it takes commands on standard input: load, unload, hold, resume MODULE;"
+                        + " set [MODULE/]NODE/PARAM=VALUE; send [MODULE/]NODE=VALUE; help."})
 public final class RunCommand implements Callable<Integer> {
     @Parameters(paramLabel = "FILE", description = "the .fdn network definition")
     Path file;
@@ -114,7 +116,8 @@ public final class RunCommand implements Callable<Integer> {
         if (distribution.appliesTo(definition)) {
             EventSink events = loggerClient == null ? counter : both(counter, loggerClient);
             try {
-                return distribution.run(file, definition, duration, allowedRoots, sets, loads, events, out, err);
+                return distribution.run(file, definition, duration, allowedRoots, sets, loads, logger, events, out,
+                        err);
             } finally {
                 closeLogger(out, loggerClient);
             }
@@ -162,6 +165,7 @@ public final class RunCommand implements Callable<Integer> {
             if (!applyRequests(controller, err)) {
                 return 2;
             }
+            new ControlCommands(controller, out).readFrom(System.in);
             long end = duration == null ? Long.MAX_VALUE : started + duration.toNanos();
             while (System.nanoTime() < end) {
                 long waitNanos = Math.min(TimeUnit.SECONDS.toNanos(1), end - System.nanoTime());
@@ -209,13 +213,7 @@ public final class RunCommand implements Callable<Integer> {
         out.printf("waiting for the logger at %s to commit the run's events ...%n", logger);
         out.flush();
         client.close();
-        ClientStatus s = client.status();
-        if (s.acked() == s.accepted() && s.lost() == 0) {
-            out.printf(Locale.ROOT, "logger: all %,d events of run %s committed%n", s.accepted(), client.run());
-        } else {
-            out.printf(Locale.ROOT, "logger: %,d of %,d events of run %s committed, %,d not confirmed, %,d LOST"
-                    + " (journal full)%n", s.acked(), s.accepted(), client.run(), s.accepted() - s.acked(), s.lost());
-        }
+        out.println(CommitReport.of(client));
         out.flush();
     }
 

@@ -5,6 +5,7 @@
  * <pre>
  *   fdnet run FILE ──▶ NetworkRepository.load ──▶ RuntimeNetwork.start ──▶ --load / --set / --param
  *        └── status line each second (firings, values, events, failed) ──▶ summary ──▶ close
+ *   stdin "hold Walk" ──▶ ControlCommands ──▶ NetworkControl (the Controller, or DistributedControl) ──▶ "ok: …"
  * </pre>
  */
 package org.fdnet.runtime.cli;

@@ -99,7 +99,13 @@ public final class LoggerCommand implements Callable<Integer> {
                 System.exit(0);
             }, "fdnet-logger-stop").start());
         }
-        System.out.printf("fdnet logger: cores -> 127.0.0.1:%d, viewers -> 127.0.0.1:%d (Ctrl-C stops)%n",
+        // HUP: after the writer reported the database DOWN (its reconnect attempts used up), try again.
+        sun.misc.Signal.handle(new sun.misc.Signal("HUP"), signal -> {
+            System.out.println("fdnet logger: told to retry the database");
+            logger.retryDatabase();
+        });
+        System.out.printf("fdnet logger: cores -> 127.0.0.1:%d, viewers -> 127.0.0.1:%d (Ctrl-C stops; kill -HUP "
+                + ProcessHandle.current().pid() + " retries a database reported DOWN)%n",
                 logger.receiverPort(), logger.senderPort());
         System.out.flush();
         while (logger.running()) {

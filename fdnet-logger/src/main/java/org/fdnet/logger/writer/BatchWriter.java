@@ -22,11 +22,12 @@ import org.slf4j.LoggerFactory;
  * level, or when a viewer asks for a flush, it writes back to back (and, if enabled, at maximum thread
  * priority) until the normal level.
  *
- * <p>Database lost: the same batch is retried every {@code reconnectDelayMillis}; after each round of
- * {@code reconnectAttempts} failures it reports loudly and keeps trying — nothing is dropped: the cache
- * keeps accepting until its critical level, then the receivers push back on the cores, which keep
- * everything not acknowledged. With {@code reconnect=false} the writer gives up at the first loss and
- * stops the logger (the cores still hold every unacknowledged event).
+ * <p>Database lost: the same batch is retried every {@code reconnectDelayMillis}; after
+ * {@code reconnectAttempts} failed attempts (the thesis panel's "number of attempts") it reports the database
+ * DOWN and stops retrying until told to ({@link #retryDatabase()}) — nothing is dropped meanwhile: the cache
+ * keeps accepting until its critical level, then the receivers push back on the cores, whose caches and
+ * journals keep everything not acknowledged. With {@code reconnect=false} the writer gives up at the first
+ * loss and stops the logger (the cores still hold every unacknowledged event).
  */
 public final class BatchWriter implements Runnable {
     private static final Logger LOG = LoggerFactory.getLogger(BatchWriter.class);
@@ -44,6 +45,8 @@ public final class BatchWriter implements Runnable {
     private volatile int lastBatchRows;
     private volatile BatchObserver observer;
     private final BatchSizer sizer;
+    private final Object retrySignal = new Object();
+    private boolean retryRequested; // guarded by retrySignal
     private Connection connection;
 
     public BatchWriter(WriterSettings settings, EventCache cache, EventStore store, SourceDirectory directory,
@@ -108,6 +111,29 @@ public final class BatchWriter implements Runnable {
         drainOnStop = drain;
         stopping = true;
         cache.wake();
+        synchronized (retrySignal) {
+            retrySignal.notifyAll();
+        }
+    }
+
+    /** Tells a writer that reported the database down to try again (another round of attempts). */
+    public void retryDatabase() {
+        synchronized (retrySignal) {
+            retryRequested = true;
+            retrySignal.notifyAll();
+        }
+    }
+
+    /** Waits until {@link #retryDatabase()} or a stop; true when told to retry. */
+    private boolean awaitRetryRequest() throws InterruptedException {
+        synchronized (retrySignal) {
+            while (!retryRequested && !stopping) {
+                retrySignal.wait();
+            }
+            boolean retry = retryRequested;
+            retryRequested = false;
+            return retry;
+        }
     }
 
     @Override
@@ -205,11 +231,20 @@ public final class BatchWriter implements Runnable {
                 if (failures == 1) {
                     LOG.warn("database write failed ({}); holding {} events, retrying every {} ms", e.getMessage(),
                             cache.unwrittenCount() + batch.size(), settings.reconnectDelayMillis());
-                } else if (failures % settings.reconnectAttempts() == 0) {
-                    LOG.error("DATABASE DOWN: {} failed attempts since {}; holding {} events in the cache ({}), still"
-                                    + " retrying; receivers pause at the critical level — nothing is dropped",
-                            failures, Instant.ofEpochMilli(downSince), cache.unwrittenCount() + batch.size(),
-                            e.getMessage());
+                }
+                if (failures % settings.reconnectAttempts() == 0) {
+                    databaseState = "DOWN since " + Instant.ofEpochMilli(downSince) + ", " + failures
+                            + " attempts; not retrying until told to";
+                    LOG.error("DATABASE DOWN: {} failed attempts since {}; holding {} events in the cache ({}); not"
+                                    + " retrying until told to; receivers pause at the critical level and the cores"
+                                    + " keep the rest — nothing is dropped", failures, Instant.ofEpochMilli(downSince),
+                            cache.unwrittenCount() + batch.size(), e.getMessage());
+                    if (!awaitRetryRequest()) {
+                        return false;
+                    }
+                    LOG.warn("told to retry the database {}: {} more attempts", store.target(),
+                            settings.reconnectAttempts());
+                    continue;
                 }
                 if (stopping && !drainOnStop) {
                     return false;

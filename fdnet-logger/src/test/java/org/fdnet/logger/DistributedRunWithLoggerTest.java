@@ -1,0 +1,156 @@
+package org.fdnet.logger;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.sql.SQLException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Predicate;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.fdnet.corba.FdnetChildProcess;
+import org.fdnet.corba.OrbSettings;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.RegisterExtension;
+
+/**
+ * {@code networks/two-robots.fdn} over three FDNet processes (hosts {@code flyer} and {@code crawler}, and
+ * {@code fdnet run} as host {@code operator-station}) with the logger on a real PostgreSQL: every host records
+ * its own events, and a host killed with {@code kill -9} and started again records again, with nothing it had
+ * committed lost or stored twice.
+ */
+@Timeout(value = 240, unit = TimeUnit.SECONDS)
+class DistributedRunWithLoggerTest {
+    @RegisterExtension
+    static final PostgresPerClass database = new PostgresPerClass();
+
+    private static final Pattern COMMITTED = Pattern.compile("logger: all ([\\d,]+) events of run ([0-9a-f-]{36}) committed");
+
+    private final List<FdnetChildProcess> processes = new ArrayList<>();
+
+    @AfterEach
+    void stopEveryProcess() {
+        for (int i = processes.size() - 1; i >= 0; i--) {
+            processes.get(i).close();
+        }
+    }
+
+    @Test
+    void shouldStoreEveryValueOfEveryHostAndKeepWhatAKilledHostHadCommitted() throws Exception {
+        try (NetworkStateLogger logger = new NetworkStateLogger(database.fixture().loggerConfig())) {
+            logger.start();
+            String loggerAddress = "127.0.0.1:" + logger.receiverPort();
+            int namingPort = FdnetChildProcess.freePort();
+            start("naming", List.of("naming", "--port", Integer.toString(namingPort)), "fdnet naming ready");
+            String naming = OrbSettings.namingCorbaloc(OrbSettings.LOOPBACK, namingPort);
+            // The flyer names its logger itself; the crawler gets the address fdnet run --logger hands over.
+            FdnetChildProcess flyer = start("host flyer",
+                    List.of("host", "--name", "flyer", "--naming", naming, "--logger", loggerAddress), "fdnet host flyer ready");
+            List<String> crawlerArgs = List.of("host", "--name", "crawler", "--naming", naming);
+            FdnetChildProcess firstCrawler = start("host crawler", crawlerArgs, "fdnet host crawler ready");
+            FdnetChildProcess run = start("run two-robots", List.of("run", "../networks/two-robots.fdn", "--naming", naming,
+                    "--as", "operator-station", "--for", "30s", "--logger", loggerAddress), "running on 3 hosts");
+
+            awaitLine(run, l -> l.startsWith("[operator]") && !l.endsWith("main/Certainty=0.0000"));
+            String firstCrawlerRun = awaitCrawlerValuesCommitted();
+            firstCrawler.kill();
+            FdnetChildProcess secondCrawler = start("host crawler again", crawlerArgs, "fdnet host crawler ready");
+            awaitLine(run, l -> l.contains("host crawler is back"));
+
+            assertThat(run.awaitExit(120_000)).as(String.join("\n", run.output())).isZero();
+            flyer.stop(60_000);
+            secondCrawler.stop(60_000);
+
+            String flyerRun = committedRun(flyer, "flyer");
+            String secondCrawlerRun = committedRun(secondCrawler, "crawler");
+            String operatorRun = committedRun(run, "operator-station");
+            assertThat(List.of(flyerRun, secondCrawlerRun, operatorRun, firstCrawlerRun)).doesNotHaveDuplicates();
+
+            // Every value each host wrote is stored once: the rows of its run are exactly what it says it committed.
+            assertThat(rowsOf(flyerRun)).isEqualTo(reportedCount(flyer));
+            assertThat(rowsOf(secondCrawlerRun)).isEqualTo(reportedCount(secondCrawler));
+            assertThat(rowsOf(operatorRun)).isEqualTo(reportedCount(run, "host operator-station: "));
+            // ... and each host's Datas are among them, each value once, in its Data's order (one time each).
+            assertValuesStoredOnceInOrder(flyerRun, "Map");
+            for (String crawlerRun : List.of(firstCrawlerRun, secondCrawlerRun)) {
+                assertValuesStoredOnceInOrder(crawlerRun, "Heading");
+                assertValuesStoredOnceInOrder(crawlerRun, "Certainty");
+            }
+            // The killed crawler's first life is still in the database: what it had committed was kept.
+            assertThat(database.fixture().count("SELECT count(*) FROM fdnet_run WHERE core_name = 'fdnet host crawler'"))
+                    .isEqualTo(2);
+            // Node ids are unique across hosts and runs: one row per (run, node) and no id shared.
+            assertThat(database.fixture().count("SELECT count(*) FROM fdnet_node WHERE node = 'Heading'"))
+                    .isGreaterThanOrEqualTo(2); // both lives of the crawler
+            assertThat(database.fixture().count("SELECT count(*) - count(DISTINCT sourceid) FROM fdnet_node")).isZero();
+        }
+    }
+
+    private FdnetChildProcess start(String label, List<String> args, String readyMarker) {
+        FdnetChildProcess p = FdnetChildProcess.start(label, args, readyMarker, 90_000);
+        processes.add(p);
+        return p;
+    }
+
+    /** Waits until the first crawler's Heading values are in the database; returns that crawler's run id. */
+    private static String awaitCrawlerValuesCommitted() throws SQLException, InterruptedException {
+        long deadline = System.currentTimeMillis() + 90_000;
+        String sql = "SELECT count(*) FROM datavalue_log WHERE sourceid IN (SELECT n.sourceid FROM fdnet_node n"
+                + " JOIN fdnet_run r USING (run_id) WHERE r.core_name = 'fdnet host crawler' AND n.node = 'Heading')";
+        while (database.fixture().count(sql) < 20) {
+            assertThat(System.currentTimeMillis()).as("crawler values reach the database").isLessThan(deadline);
+            Thread.sleep(200);
+        }
+        return database.fixture().text("SELECT run_uuid::text FROM fdnet_run WHERE core_name = 'fdnet host crawler'");
+    }
+
+    private static void awaitLine(FdnetChildProcess p, Predicate<String> line) throws InterruptedException {
+        long deadline = System.currentTimeMillis() + 90_000;
+        while (p.output().stream().noneMatch(line)) {
+            assertThat(System.currentTimeMillis()).as(String.join("\n", p.output())).isLessThan(deadline);
+            Thread.sleep(100);
+        }
+    }
+
+    private static String committedRun(FdnetChildProcess p, String host) {
+        return p.output().stream().filter(l -> l.contains(host + ": logger: all ")).map(COMMITTED::matcher)
+                .filter(Matcher::find).map(m -> m.group(2)).findFirst()
+                .orElseThrow(() -> new AssertionError(host + " did not report its events committed (exit "
+                        + p.awaitExit(0) + "):\n" + String.join("\n", p.output())));
+    }
+
+    private static long reportedCount(FdnetChildProcess p) {
+        return reportedCount(p, "fdnet host ");
+    }
+
+    private static long reportedCount(FdnetChildProcess p, String prefix) {
+        return p.output().stream().filter(l -> l.startsWith(prefix) && l.contains(": logger: all "))
+                .map(COMMITTED::matcher).filter(Matcher::find).map(m -> Long.parseLong(m.group(1).replace(",", "")))
+                .findFirst().orElseThrow();
+    }
+
+    private static String ofRun(String runUuid) {
+        return " WHERE sourceid IN (SELECT n.sourceid FROM fdnet_node n JOIN fdnet_run r USING (run_id)"
+                + " WHERE r.run_uuid = '" + runUuid + "')";
+    }
+
+    private static long rowsOf(String runUuid) throws SQLException {
+        String where = ofRun(runUuid);
+        return database.fixture().count("SELECT count(*) FROM datavalue_log" + where)
+                + database.fixture().count("SELECT count(*) FROM procvalue_log" + where)
+                + database.fixture().count("SELECT count(*) FROM netcommand_log" + where)
+                + database.fixture().count("SELECT count(*) FROM fdnet_node" + where + " AND node IS NOT NULL");
+    }
+
+    private static void assertValuesStoredOnceInOrder(String runUuid, String data) throws SQLException {
+        String where = " WHERE sourceid = (SELECT n.sourceid FROM fdnet_node n JOIN fdnet_run r USING (run_id)"
+                + " WHERE r.run_uuid = '" + runUuid + "' AND n.module = 'main' AND n.node = '" + data + "')";
+        long values = database.fixture().count("SELECT count(*) FROM datavalue_log" + where);
+        assertThat(values).as("values of %s in run %s", data, runUuid).isGreaterThan(5);
+        assertThat(database.fixture().count("SELECT count(DISTINCT time) FROM datavalue_log" + where))
+                .as("distinct times of %s in run %s", data, runUuid).isEqualTo(values);
+    }
+}

@@ -241,6 +241,11 @@ public final class PlotPanel extends JComponent {
                 summary.widen(raw);
             }
             double[] range = padded(raw);
+            // keep the legend's rows above the lines: widen the range upwards by their height
+            int legendHeight = legendRows(g, laneSeries, plotWidth) * g.getFontMetrics().getHeight() + 8;
+            if (legendHeight < laneHeight / 2) {
+                range[1] += (range[1] - range[0]) * legendHeight / (double) (laneHeight - legendHeight);
+            }
             paintLaneFrame(g, e.getKey(), top, laneHeight, plotWidth, range);
             int legendX = LEFT + 6;
             int legendY = top + 14;
@@ -254,7 +259,7 @@ public final class PlotPanel extends JComponent {
                 newest = Math.max(newest, summary.newest());
                 String label = s.name();
                 FontMetrics fm = g.getFontMetrics();
-                if (legendX + fm.stringWidth(label) + 16 > LEFT + plotWidth) {
+                if (legendX + fm.stringWidth(label) + 16 > LEFT + plotWidth - 130) {
                     legendX = LEFT + 6;
                     legendY += fm.getHeight();
                 }
@@ -281,10 +286,6 @@ public final class PlotPanel extends JComponent {
         if (cursorTime != Long.MIN_VALUE) {
             paintReadout(g, cursorTime, readout, plotWidth, bottom);
         }
-        if (paused) {
-            g.setColor(new Color(0xb0, 0x30, 0x30));
-            g.drawString("PAUSED", LEFT + plotWidth - 50, height - 6);
-        }
         newestPainted = newest;
         frames.incrementAndGet();
     }
@@ -297,6 +298,21 @@ public final class PlotPanel extends JComponent {
         while (summaries.size() < seriesCount) {
             summaries.add(new ColumnSummary());
         }
+    }
+
+    private static int legendRows(Graphics2D g, List<Series> series, int plotWidth) {
+        FontMetrics fm = g.getFontMetrics();
+        int rows = 1;
+        int x = LEFT + 6;
+        for (Series s : series) {
+            int w = fm.stringWidth(s.name());
+            if (x + w + 16 > LEFT + plotWidth - 130) {
+                x = LEFT + 6;
+                rows++;
+            }
+            x += w + 22;
+        }
+        return rows;
     }
 
     private static double[] padded(double[] r) {
@@ -360,8 +376,12 @@ public final class PlotPanel extends JComponent {
             String label = CLOCK.format(Instant.ofEpochSecond(t / 1_000_000, (t % 1_000_000) * 1000));
             g.drawString(label, x - fm.stringWidth(label) / 2, bottom + 5 + fm.getAscent());
         }
-        String width = String.format("window %.3g s", (end - start) / 1e6);
-        g.drawString(width, 4, bottom + 5 + fm.getAscent());
+        String width = String.format("window %.3g s", (end - start) / 1e6) + (paused ? " · PAUSED" : "");
+        int wx = LEFT + w - 6 - fm.stringWidth(width);
+        g.setColor(new Color(255, 255, 255, 210));
+        g.fillRect(wx - 3, TOP + 3, fm.stringWidth(width) + 6, fm.getHeight());
+        g.setColor(paused ? new Color(0xb0, 0x30, 0x30) : Color.DARK_GRAY);
+        g.drawString(width, wx, TOP + 3 + fm.getAscent());
     }
 
     private void paintReadout(Graphics2D g, long time, List<String> lines, int w, int bottom) {

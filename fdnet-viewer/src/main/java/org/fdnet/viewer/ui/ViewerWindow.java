@@ -148,7 +148,7 @@ public final class ViewerWindow extends JFrame {
         int newestRun = runList.isEmpty() ? -1 : runList.get(0).runId();
         nodes.stream().filter(n -> n.runId() == newestRun).forEach(nodeModel::addElement);
         runList.forEach(runs::addItem);
-        status.setText(String.format("%d Datas in the newest run, %d runs recorded; plotting %d series",
+        status.setText(String.format("%d Datas in the newest run, %d runs recorded; plotting %d node(s)",
                 nodeModel.size(), runList.size(), live.trackedSources().length));
     }
 

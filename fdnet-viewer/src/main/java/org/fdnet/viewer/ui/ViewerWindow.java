@@ -335,8 +335,8 @@ public final class ViewerWindow extends JFrame {
             }
             showPlot(replayPlot);
             r.start();
-            status.setText(String.format("replaying %s, %.1f s .. %.1f s: %,d values at %s", run, fromS, toS, r.total(),
-                    speed.getSelectedItem()));
+            String range = fromS < 0 ? String.format("its last %.1f s", -fromS) : String.format("%.1f s .. %.1f s", fromS, toS);
+            status.setText(String.format("replaying %s, %s: %,d values at %s", run, range, r.total(), speed.getSelectedItem()));
         } catch (IOException | IllegalArgumentException e) {
             status.setText("replay failed: " + e.getMessage());
         }

@@ -6,10 +6,10 @@ import java.util.Arrays;
  * One plotted line: the samples (time in µs since the epoch, value) of one Data — or of one component of a
  * Data holding several doubles — with its name and unit. Appends come from the network thread, reads from
  * the painter: both lock this object. Keeps at most {@link #MAX_SAMPLES}; beyond that the oldest quarter
- * is dropped (about 33 min at 1 kHz).
+ * is dropped (10 min at 1 kHz; 50 such series hold about 0.5 GB).
  */
 public final class Series {
-    public static final int MAX_SAMPLES = 2_000_000;
+    public static final int MAX_SAMPLES = 600_000;
 
     private final String name;
     private final String unit;

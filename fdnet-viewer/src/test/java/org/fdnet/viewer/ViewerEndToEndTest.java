@@ -86,6 +86,10 @@ class ViewerEndToEndTest {
                     }
                 }
                 assertThat(mine).as("values of source %d, live vs logged", id).containsExactlyElementsOf(logged);
+                PlotData history = new PlotData();
+                history.track(id, "history", "");
+                assertThat(viewer.loadHistory(new int[] {id}, mine.get(0).time(), Long.MAX_VALUE, history))
+                        .as("history loaded into a plot").isEqualTo(logged.size());
                 List<Series> series = live.seriesOf(id);
                 double[] first = SampleDecoder.numbers((DataValueEvent) mine.get(0));
                 if (first.length > 0) {

@@ -121,7 +121,7 @@ public final class BenchViewerCommand implements Callable<Integer> {
                 System.out.printf("VIEWER write -> screen (newest drawn value's age at frame end): p50 %.1f ms, p99 %.1f ms, max %.1f ms (target < 1000 ms)%n",
                         latency.getValueAtPercentile(50) / 1000.0, latency.getValueAtPercentile(99) / 1000.0,
                         latency.getMaxValue() / 1000.0);
-                System.out.printf("baseline raw monitor stream, write -> viewer client, no painting: p50 %.1f ms, p99 %.1f ms, max %.1f ms (%,d values)%n",
+                System.out.printf("baseline raw monitor stream, write -> viewer client (values decoded into their series), no painting: p50 %.1f ms, p99 %.1f ms, max %.1f ms (%,d values)%n",
                         raw.getValueAtPercentile(50) / 1000.0, raw.getValueAtPercentile(99) / 1000.0,
                         raw.getMaxValue() / 1000.0, raw.getTotalCount());
                 plot.setPaused(true);

@@ -165,8 +165,9 @@ public final class ViewerWindow extends JFrame {
             livePlot.setPaused(false);
             showPlot(livePlot);
         });
-        JTextField lastSeconds = new JTextField("60", 5);
-        JButton history = new JButton("History (last s)");
+        JTextField lastSeconds = new JTextField("60", 12);
+        lastSeconds.setToolTipText("seconds (60 = the last minute) or clock times 08:09:30-08:10:15");
+        JButton history = new JButton("History");
         history.addActionListener(e -> loadHistory(lastSeconds.getText()));
         JButton export = new JButton("Export CSV…");
         export.addActionListener(e -> exportCsv());
@@ -263,25 +264,24 @@ public final class ViewerWindow extends JFrame {
         }
     }
 
-    private void loadHistory(String secondsText) {
-        long seconds;
+    private void loadHistory(String rangeText) {
+        long newest = live.lastTime() == Long.MIN_VALUE ? System.currentTimeMillis() * 1000 : live.lastTime();
+        long[] range;
         try {
-            seconds = Long.parseLong(secondsText.trim());
-        } catch (NumberFormatException e) {
-            status.setText("history: '" + secondsText + "' is not a number of seconds");
+            range = HistoryRange.parse(rangeText, newest, java.time.ZoneId.systemDefault());
+        } catch (IllegalArgumentException e) {
+            status.setText(e.getMessage());
             return;
         }
-        long to = live.lastTime() == Long.MIN_VALUE ? System.currentTimeMillis() * 1000 : live.lastTime();
-        long from = to - seconds * 1_000_000;
         try {
             PlotData history = new PlotData();
             copyTracking(live, history);
-            int n = connection.loadHistory(live.trackedSources(), from, to, history);
+            int n = connection.loadHistory(live.trackedSources(), range[0], range[1], history);
             PlotPanel plot = new PlotPanel(history);
-            plot.showRange(from, to);
+            plot.showRange(range[0], range[1]);
             showPlot(plot);
-            status.setText(String.format("history of the last %d s: %,d values from the logger (cache + database);"
-                    + " press Live to return", seconds, n));
+            status.setText(String.format("history %s: %,d values from the logger (cache + database); press Live to return",
+                    rangeText.trim(), n));
         } catch (IOException e) {
             status.setText("history failed: " + e.getMessage());
         }

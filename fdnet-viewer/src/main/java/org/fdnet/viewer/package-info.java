@@ -1,5 +1,14 @@
 /**
  * The Network State Viewer: live and historical plots of node values, a client of the logger's sender
- * server. Part 6 of the plan fills this module; it holds no code yet and nothing here claims to work.
+ * server (thesis Chapter 4, the viewer service; Chapter 5 §VIII–IX).
+ *
+ * <pre>
+ *   network ─LoggerClient─▶ logger (cache + PostgreSQL) ─sender server─▶ source.LoggerConnection / Replay
+ *        ─▶ data.PlotData (Series per number) ─▶ ui.PlotPanel (one canvas) in ui.ViewerWindow
+ * </pre>
+ *
+ * Packages: {@code data} (series), {@code source} (logger connection, replay), {@code ui} (window, plot,
+ * CSV export), {@code cli} ({@code fdnet viewer}, {@code fdnet bench viewer}). Public API for the editor:
+ * {@link org.fdnet.viewer.ui.ViewerWindow#open(String, java.util.List)}.
  */
 package org.fdnet.viewer;

@@ -1,0 +1,144 @@
+package org.fdnet.viewer.source;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Consumer;
+import org.fdnet.event.NetworkEvent;
+import org.fdnet.event.client.ViewerClient;
+import org.fdnet.event.wire.LoggedNode;
+import org.fdnet.netinfo.NodeKind;
+import org.fdnet.viewer.data.NodeSelection;
+import org.fdnet.viewer.data.PlotData;
+
+/**
+ * The viewer's link to the logger's sender server (the core's {@link ViewerClient}): lists the logger's
+ * nodes and runs, resolves names to source ids, streams the monitored nodes live into a {@link PlotData},
+ * and loads history (cache and database, merged by the logger) into it.
+ *
+ * <pre>
+ *   watch(selection) ─LIST_NODES─▶ newest run's source ids ─MONITOR─▶ logger
+ *   logger ─MONITOR_EVENTS─▶ live listener ─▶ PlotData (while not paused by the caller's choice)
+ *   loadHistory(from, to) ─HISTORY─▶ events in time order ─▶ PlotData
+ * </pre>
+ */
+public final class LoggerConnection implements AutoCloseable {
+    private final String address;
+    private final ViewerClient client;
+    private final PlotData live;
+
+    /** Connects to {@code host:port}; live events of watched nodes go to {@code live}. */
+    public LoggerConnection(String address, PlotData live) throws IOException {
+        this(address, live, e -> { });
+    }
+
+    /** As above; {@code tap} sees every monitored event too (after {@code live} took it). */
+    public LoggerConnection(String address, PlotData live, Consumer<NetworkEvent> tap) throws IOException {
+        this.address = address;
+        this.live = live;
+        int colon = address.lastIndexOf(':');
+        if (colon <= 0 || colon == address.length() - 1) {
+            throw new IllegalArgumentException("logger address '" + address + "': expected HOST:PORT, e.g. 127.0.0.1:5556");
+        }
+        int port;
+        try {
+            port = Integer.parseInt(address.substring(colon + 1));
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("logger address '" + address + "': the port is not a number");
+        }
+        try {
+            client = new ViewerClient(address.substring(0, colon), port, "fdnet viewer", e -> {
+                live.accept(e);
+                tap.accept(e);
+            });
+        } catch (IOException e) {
+            throw new IOException("cannot reach the logger's viewer service at " + address + ": " + e.getMessage(), e);
+        }
+    }
+
+    public String address() {
+        return address;
+    }
+
+    /** The logger's Data nodes, newest run first. */
+    public List<LoggedNode> dataNodes() throws IOException {
+        List<LoggedNode> out = new ArrayList<>();
+        for (LoggedNode n : client.nodes("")) {
+            if (n.kind() == NodeKind.DATA) {
+                out.add(n);
+            }
+        }
+        return out;
+    }
+
+    /** The runs the logger knows (its database and cache), newest first, each with its Data nodes. */
+    public List<RunInfo> runs() throws IOException {
+        Map<Integer, List<LoggedNode>> byRun = new LinkedHashMap<>();
+        for (LoggedNode n : dataNodes()) {
+            byRun.computeIfAbsent(n.runId(), r -> new ArrayList<>()).add(n);
+        }
+        List<RunInfo> runs = new ArrayList<>();
+        byRun.forEach((run, nodes) -> runs.add(new RunInfo(run, nodes)));
+        runs.sort((a, b) -> Integer.compare(b.runId(), a.runId()));
+        return runs;
+    }
+
+    /**
+     * The newest run's node of that name ({@code Module/Node} exactly, or {@code Node} in any module).
+     *
+     * @throws IllegalArgumentException naming the node when the logger does not know it
+     */
+    public LoggedNode resolve(NodeSelection selection) throws IOException {
+        for (LoggedNode n : client.nodes(selection.name())) {
+            if (n.kind() == NodeKind.DATA) {
+                return n;
+            }
+        }
+        throw new IllegalArgumentException("node '" + selection.name() + "': the logger at " + address
+                + " knows no Data of that name (fdnet viewer lists them in its node picker)");
+    }
+
+    /** Tracks the nodes in the live data and starts monitoring them; answers the resolved nodes. */
+    public List<LoggedNode> watch(List<NodeSelection> selections) throws IOException {
+        List<LoggedNode> nodes = new ArrayList<>();
+        for (NodeSelection s : selections) {
+            LoggedNode n = resolve(s);
+            live.track(n.sourceId(), label(n), s.unit());
+            nodes.add(n);
+        }
+        watchNodes(nodes);
+        return nodes;
+    }
+
+    /** Monitors nodes already tracked in the live data. */
+    public void watchNodes(List<LoggedNode> nodes) throws IOException {
+        for (LoggedNode n : nodes) {
+            live.track(n.sourceId(), label(n), "");
+        }
+        client.monitor(nodes.stream().mapToInt(LoggedNode::sourceId).toArray());
+    }
+
+    /** Every value of the sources with {@code from <= time <= to} (µs), in time order, into {@code into}. */
+    public int loadHistory(int[] sourceIds, long from, long to, PlotData into) throws IOException {
+        List<NetworkEvent> events = client.history(sourceIds, from, to);
+        events.forEach(into::accept);
+        return events.size();
+    }
+
+    /** The raw history of the sources (time order), for replay. */
+    public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws IOException {
+        return client.history(sourceIds, from, to);
+    }
+
+    /** How a node is named in legends: {@code Module/Node}. */
+    public static String label(LoggedNode n) {
+        return n.name().module().isEmpty() ? n.name().node() : n.name().module() + "/" + n.name().node();
+    }
+
+    @Override
+    public void close() {
+        client.close();
+    }
+}

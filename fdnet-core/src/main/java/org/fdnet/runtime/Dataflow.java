@@ -1,5 +1,6 @@
 package org.fdnet.runtime;
 
+import java.time.Instant;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.LongAdder;
@@ -33,15 +34,12 @@ final class Dataflow {
     private final LongAdder firings = new LongAdder();
     private final LongAdder writes = new LongAdder();
     private final long startNanos = System.nanoTime();
-    /** Simulated time, or null on the wall clock. */
-    private final DrivenClock driven;
     private volatile Function<RelationNode, Servants> servants = r -> {
         throw new IllegalStateException("no servants in this network");
     };
 
-    Dataflow(EventPublisher events, DrivenClock driven) {
+    Dataflow(EventPublisher events) {
         this.events = events;
-        this.driven = driven;
     }
 
     void attach(Scheduler s) {
@@ -242,13 +240,12 @@ final class Dataflow {
         return true;
     }
 
-    /** Now, µs since the epoch: the wall time, or the driven clock's. */
-    long nowMicros() {
-        return driven == null ? org.fdnet.event.EventClock.wallMicros() : driven.micros();
+    long wallMicros() {
+        Instant now = Instant.now();
+        return now.getEpochSecond() * 1_000_000L + now.getNano() / 1_000L;
     }
 
-    /** Seconds since the network started, or the driven clock's simulated seconds. */
     double secondsSinceStart() {
-        return driven == null ? (System.nanoTime() - startNanos) / 1e9 : driven.seconds();
+        return (System.nanoTime() - startNanos) / 1e9;
     }
 }

@@ -145,7 +145,7 @@ final class FiringContext implements RelationContext {
     @Override
     public long now() {
         if (now == 0) {
-            now = flow.nowMicros();
+            now = flow.wallMicros();
         }
         return now;
     }

@@ -46,10 +46,7 @@ public final class RuntimeNetwork implements AutoCloseable {
     private final EventPublisher events;
     private final Dataflow flow;
     private final Scheduler scheduler;
-    /** The wall-clock period timer, or null on a driven clock. */
     private final ScheduledExecutorService timer;
-    /** The simulated-time periods, or null on the wall clock. */
-    private final DrivenPeriods drivenPeriods;
     private final NodeClassResolver resolver;
     private final NodeFactory factory;
     private final ReentrantLock structure = new ReentrantLock();
@@ -75,22 +72,14 @@ public final class RuntimeNetwork implements AutoCloseable {
         this.options = options;
         this.events = new EventPublisher(options.clock());
         options.sinks().forEach(events::add);
-        DrivenClock driven = options.drivenClock();
-        this.flow = new Dataflow(events, driven);
-        if (driven == null) {
-            this.scheduler = new Scheduler(flow, options.workerThreads(), options.drainBudget(), options.inlineCallers());
-            this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
-                Thread t = new Thread(r, "fdnet-period");
-                t.setDaemon(true);
-                return t;
-            });
-            this.drivenPeriods = null;
-        } else {
-            this.scheduler = Scheduler.driven(flow);
-            this.timer = null;
-            this.drivenPeriods = new DrivenPeriods(driven);
-        }
+        this.flow = new Dataflow(events);
+        this.scheduler = new Scheduler(flow, options.workerThreads(), options.drainBudget(), options.inlineCallers());
         flow.attach(scheduler);
+        this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
+            Thread t = new Thread(r, "fdnet-period");
+            t.setDaemon(true);
+            return t;
+        });
         this.resolver = new NodeClassResolver(options.classLoading(), Data.class, Relation.class);
         this.factory = new NodeFactory(resolver, flow);
         this.definition = new NetworkInfo(definition.name());
@@ -199,32 +188,6 @@ public final class RuntimeNetwork implements AutoCloseable {
 
     public long writes() {
         return flow.writes();
-    }
-
-    /**
-     * On a {@link RuntimeOptions#drivenClock driven clock}: moves simulated time forward to {@code simMicros} µs
-     * after the clock's origin, firing every Relation period that falls due up to then in time order (ties by
-     * node id), each with the clock at its due time, and runs the network to quiescence on the calling thread.
-     *
-     * @throws IllegalStateException    on the wall clock
-     * @throws IllegalArgumentException when {@code simMicros} is before the clock's time
-     */
-    public void advanceTo(long simMicros) {
-        if (drivenPeriods == null) {
-            throw new IllegalStateException("advanceTo needs a network on a driven clock (RuntimeOptions.drivenClock)");
-        }
-        DrivenClock clock = options.drivenClock();
-        if (simMicros < clock.simMicros()) {
-            throw new IllegalArgumentException("a driven clock never goes back: asked for " + simMicros
-                    + " µs, it is already at " + clock.simMicros() + " µs");
-        }
-        scheduler.runDeferred();
-        RelationNode due;
-        while (!closed && (due = drivenPeriods.nextDue(simMicros)) != null) {
-            due.periodDue.set(true);
-            flow.requestOnPool(due);
-        }
-        clock.moveTo(simMicros);
     }
 
     public int workerThreads() {
@@ -383,9 +346,7 @@ public final class RuntimeNetwork implements AutoCloseable {
     }
 
     private void startPeriod(RelationNode node) {
-        if (node != null && node.periodMillis > 0 && drivenPeriods != null) {
-            drivenPeriods.start(node);
-        } else if (node != null && node.periodMillis > 0) {
+        if (node != null && node.periodMillis > 0) {
             node.periodic = timer.scheduleAtFixedRate(() -> {
                 node.periodDue.set(true);
                 flow.requestOnPool(node);
@@ -598,9 +559,7 @@ public final class RuntimeNetwork implements AutoCloseable {
         } finally {
             structure.unlock();
         }
-        if (timer != null) {
-            timer.shutdownNow();
-        }
+        timer.shutdownNow();
         scheduler.close();
         for (RelationNode r : relations.values()) {
             r.alive = false;

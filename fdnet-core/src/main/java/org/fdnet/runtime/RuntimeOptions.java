@@ -17,7 +17,6 @@ public final class RuntimeOptions {
     private boolean inlineCallers = true;
     private ClassLoadingPolicy classLoading = ClassLoadingPolicy.builtInOnly();
     private EventClock clock = new EventClock();
-    private DrivenClock driven;
     private final List<EventSink> sinks = new ArrayList<>();
     private volatile boolean sealed;
 
@@ -71,23 +70,7 @@ public final class RuntimeOptions {
     /** The clock stamping this network's events (share one per process). */
     public RuntimeOptions clock(EventClock c) {
         checkOpen();
-        if (driven != null) {
-            throw new IllegalStateException("a network on a driven clock stamps its events with that clock");
-        }
         this.clock = java.util.Objects.requireNonNull(c, "clock");
-        return this;
-    }
-
-    /**
-     * Runs the network on simulated time instead of the wall clock: no timer thread and no worker pool; the
-     * driver calls {@link RuntimeNetwork#advanceTo}, which fires due periods and runs the network to quiescence
-     * on the calling thread, and a write from outside a firing runs what it makes ready before it returns.
-     * Event stamps, {@link RelationContext#now()} and {@link RelationContext#seconds()} read this clock.
-     */
-    public RuntimeOptions drivenClock(DrivenClock c) {
-        checkOpen();
-        this.driven = java.util.Objects.requireNonNull(c, "drivenClock");
-        this.clock = new EventClock(c::micros);
         return this;
     }
 
@@ -130,11 +113,6 @@ public final class RuntimeOptions {
 
     EventClock clock() {
         return clock;
-    }
-
-    /** The driven clock, or {@code null} on the wall clock. */
-    DrivenClock drivenClock() {
-        return driven;
     }
 
     List<EventSink> sinks() {

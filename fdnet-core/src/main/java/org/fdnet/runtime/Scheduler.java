@@ -19,18 +19,10 @@ import org.slf4j.LoggerFactory;
  *                ├─ caller may run inline ────▶ local queue, drain now
  *                └─ else ─────────────────────▶ pool queue ──▶ worker drains it the same way
  * </pre>
- *
- * <p>On a driven clock ({@link #driven}) there is no pool: every Relation runs on the thread that made it
- * ready, in the order it became ready — the driver's call returns when the network is quiet, and a stepped
- * run is reproducible event by event. A feedback loop that never settles would hold the driver forever, so a
- * drain still stops after {@link #DRIVEN_BUDGET} firings; the rest waits in the pool queue for the driver's
- * next {@link #runDeferred} (the next time step), which keeps the run deterministic.
  */
 final class Scheduler implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(Scheduler.class);
     private static final int LOCAL_CAPACITY = 4096;
-    /** Firings one driven drain runs before the rest waits for the next time step. */
-    static final int DRIVEN_BUDGET = 100_000;
 
     private final Dataflow flow;
     private final LinkedBlockingQueue<RelationNode> pool = new LinkedBlockingQueue<>();
@@ -44,24 +36,6 @@ final class Scheduler implements AutoCloseable {
     private static final class LocalRun {
         final ArrayDeque<RelationNode> queue = new ArrayDeque<>();
         boolean draining;
-    }
-
-    /** A scheduler that runs everything on its callers' threads, to quiescence: for a driven clock. */
-    static Scheduler driven(Dataflow flow) {
-        return new Scheduler(flow, 0, DRIVEN_BUDGET, true);
-    }
-
-    /** Driven mode: runs, on this thread, the work a drain left for the next time step (budget spent). */
-    void runDeferred() {
-        if (pool.isEmpty()) {
-            return;
-        }
-        LocalRun l = local.get();
-        RelationNode r;
-        while ((r = pool.poll()) != null) {
-            l.queue.add(r);
-        }
-        drain(l);
     }
 
     Scheduler(Dataflow flow, int threads, int budget, boolean inlineCallers) {
@@ -82,7 +56,7 @@ final class Scheduler implements AutoCloseable {
     void dispatch(RelationNode r) {
         LocalRun l = local.get();
         if (l.draining) {
-            if (l.queue.size() < LOCAL_CAPACITY || workers.length == 0) {
+            if (l.queue.size() < LOCAL_CAPACITY) {
                 l.queue.add(r);
             } else {
                 pool.add(r);
@@ -96,11 +70,7 @@ final class Scheduler implements AutoCloseable {
     }
 
     void submit(RelationNode r) {
-        if (workers.length == 0) {
-            dispatch(r);
-        } else {
-            pool.add(r);
-        }
+        pool.add(r);
     }
 
     private void drain(LocalRun l) {
@@ -113,7 +83,7 @@ final class Scheduler implements AutoCloseable {
                     pool.add(r);
                     break;
                 }
-                if (!l.queue.isEmpty() && idle.get() > 0 && workers.length > 0) {
+                if (!l.queue.isEmpty() && idle.get() > 0) {
                     pool.add(l.queue.pollLast());
                 }
                 r.runAndSettle(flow);

@@ -1,5 +1,5 @@
 /**
- * The RoQ simulator: a JNI real-time joint loop driving a simulated TITAN-VIII quadruped. Part 5 of the
- * plan fills this module; it holds no code yet and nothing here claims to work.
+ * The RoQ: the simulated robot ({@code org.fdnet.roq.sim}), its Java2D view ({@code org.fdnet.roq.view}) and, from
+ * Part 6, its FDNet Data and Relation nodes and the bridge between a running network and the simulator.
  */
 package org.fdnet.roq;

@@ -1,0 +1,98 @@
+/*
+ * The byte layout of the block shared with Java (org.fdnet.roq.sim.SharedBlockLayout holds the same numbers;
+ * the ABI handshake compares ROQ_LAYOUT_VERSION and ROQ_BLOCK_SIZE) and the indices of the parameter array
+ * (org.fdnet.roq.sim.NativeParameters).
+ */
+#ifndef ROQ_LAYOUT_H
+#define ROQ_LAYOUT_H
+
+#define ROQ_LAYOUT_VERSION 2
+#define ROQ_BLOCK_SIZE 16384
+
+#define ROQ_JOINTS 12
+#define ROQ_LEGS 4
+#define ROQ_DEPTH_W 32
+#define ROQ_DEPTH_H 24
+#define ROQ_MAX_FRAGILE 256
+#define ROQ_HIST_BINS 2000
+#define ROQ_STALE_TICKS 100
+
+/* header */
+#define L_LAYOUT_VERSION 0
+#define L_SNAPSHOT_SEQ 8
+#define L_COMMAND_SEQ 16
+
+/* snapshot (under the snapshot sequence) */
+#define S_TICK 64
+#define S_TIME 72
+#define S_JOINT_ANGLE 80
+#define S_JOINT_VELOCITY 176
+#define S_JOINT_TORQUE 272
+#define S_ROLL 368
+#define S_PITCH 376
+#define S_FOOT_FORCE 384
+#define S_IR_RANGE 416
+#define S_ULTRASONIC_RANGE 424
+#define S_BODY_POSITION 432
+#define S_BODY_QUATERNION 456
+#define S_CENTRE_OF_MASS 488
+#define S_WHEEL_SPEED 512
+#define S_BROKEN_COUNT 544
+#define S_BROKEN_MASK 552
+#define S_DEPTH_FRAMES 584
+#define S_DEPTH 592
+#define S_END (S_DEPTH + 4 * ROQ_DEPTH_W * ROQ_DEPTH_H)
+
+/* loop statistics (same sequence) */
+#define T_TICKS 4096
+#define T_OVERRUNS 4104
+#define T_MAX_OVERRUN_NS 4112
+#define T_MAX_LATENCY_NS 4120
+#define T_LATENCY_SAMPLES 4128
+#define T_COMMANDS_APPLIED 4136
+#define T_COMMANDS_NAN 4144
+#define T_COMMANDS_OUT_OF_RANGE 4152
+#define T_COMMANDS_STALE 4160
+#define T_RT_FLAGS 4168
+#define T_MAX_TICK_NS 4176
+#define T_HISTOGRAM 4224
+
+/* command slot (under the command sequence, written by Java) */
+#define C_ISSUED_TICK 12288
+#define C_TARGETS 12296
+#define C_WHEEL_SPEED 12392
+#define C_FLAGS 12424
+#define FLAG_WHEELS 1
+
+#define RT_SCHED_FIFO 1
+#define RT_MLOCKALL 2
+#define RT_DMA_LATENCY 4
+
+/* parameter array */
+#define P_KP 0
+#define P_KD 1
+#define P_TORQUE_CONSTANT 2
+#define P_RESISTANCE 3
+#define P_SUPPLY_VOLTAGE 4
+#define P_CURRENT_LIMIT 5
+#define P_GEAR 6
+#define P_EFFICIENCY 7
+#define P_WHEEL_KV 8
+#define P_WHEEL_TORQUE 9
+#define P_WHEEL_SPEED 10
+#define P_JOINT_MIN_0 11
+#define P_JOINT_MAX_0 14
+#define P_INITIAL_POSE_0 17
+#define P_BREAK_HOLD_TICKS 20
+#define P_IR_0 21
+#define P_US_0 26
+#define P_CAMERA_0 31
+#define P_NOISE 38
+#define P_NOISE_SEED 39
+#define P_IR_PERIOD 40
+#define P_US_PERIOD 41
+#define P_DEPTH_ROW_PERIOD 42
+#define P_RANGE_SENSORS 43
+#define P_COUNT 44
+
+#endif

@@ -1,0 +1,17 @@
+package org.fdnet.roq.cli;
+
+import java.util.List;
+import org.fdnet.cli.CommandProvider;
+
+/** Adds {@code fdnet sim}, {@code fdnet bench rt} and {@code fdnet bench sim}. */
+public final class RoqCommandProvider implements CommandProvider {
+    @Override
+    public List<Object> commands() {
+        return List.of(new SimCommand());
+    }
+
+    @Override
+    public List<Object> benchmarks() {
+        return List.of(new BenchRtCommand(), new BenchSimCommand());
+    }
+}

@@ -1,0 +1,7 @@
+/**
+ * roq-sim's commands under {@code fdnet}: {@code sim} (run a course, print progress and a summary, optionally
+ * a screenshot) and the benchmarks {@code bench rt} (the joint loop's wake-up latency beside cyclictest) and
+ * {@code bench sim} (the stepped tick beside a bare {@code mj_step} loop). Registered through
+ * {@link org.fdnet.roq.cli.RoqCommandProvider} in {@code META-INF/services/org.fdnet.cli.CommandProvider}.
+ */
+package org.fdnet.roq.cli;

@@ -1,0 +1,84 @@
+package org.fdnet.roq.sim;
+
+/**
+ * The byte layout of the one direct buffer Java and the C joint loop share. The same offsets are named constants
+ * in {@code src/main/c/roq_layout.h} (checked at start: the C side reports its {@code ROQ_BLOCK_SIZE} and
+ * {@code ROQ_LAYOUT_VERSION} through the ABI handshake). All numbers are in the platform's byte order; doubles are
+ * IEEE 754, 8-byte aligned.
+ *
+ * <pre>
+ *  0      int32  layout version ({@link #VERSION})
+ *  8      int64  snapshot sequence: odd while the loop writes, even when the snapshot is consistent
+ *  16     int64  command sequence:  odd while Java writes the command slot, even when it is complete
+ *  64     snapshot  (written by C once per tick under the snapshot sequence)
+ *  4096   loop statistics (same sequence)
+ *  12288  command slot (written by Java under the command sequence, read by C at the start of a tick)
+ *  16384  end
+ * </pre>
+ */
+public final class SharedBlockLayout {
+    private SharedBlockLayout() {
+    }
+
+    /** Layout version; changes whenever an offset does. */
+    public static final int VERSION = 2;
+    /** Size of the block, bytes. */
+    public static final int BLOCK_SIZE = 16384;
+
+    public static final int LAYOUT_VERSION = 0;
+    public static final int SNAPSHOT_SEQ = 8;
+    public static final int COMMAND_SEQ = 16;
+
+    // snapshot
+    public static final int S_TICK = 64;
+    public static final int S_TIME = 72;
+    public static final int S_JOINT_ANGLE = 80;
+    public static final int S_JOINT_VELOCITY = 176;
+    public static final int S_JOINT_TORQUE = 272;
+    public static final int S_ROLL = 368;
+    public static final int S_PITCH = 376;
+    public static final int S_FOOT_FORCE = 384;
+    public static final int S_IR_RANGE = 416;
+    public static final int S_ULTRASONIC_RANGE = 424;
+    public static final int S_BODY_POSITION = 432;
+    public static final int S_BODY_QUATERNION = 456;
+    public static final int S_CENTRE_OF_MASS = 488;
+    public static final int S_WHEEL_SPEED = 512;
+    public static final int S_BROKEN_COUNT = 544;
+    public static final int S_BROKEN_MASK = 552;
+    public static final int S_DEPTH_FRAMES = 584;
+    public static final int S_DEPTH = 592;
+    public static final int S_END = S_DEPTH + 4 * RoqGeometry.DEPTH_WIDTH * RoqGeometry.DEPTH_HEIGHT;
+
+    // loop statistics
+    public static final int T_TICKS = 4096;
+    public static final int T_OVERRUNS = 4104;
+    public static final int T_MAX_OVERRUN_NS = 4112;
+    public static final int T_MAX_LATENCY_NS = 4120;
+    public static final int T_LATENCY_SAMPLES = 4128;
+    public static final int T_COMMANDS_APPLIED = 4136;
+    public static final int T_COMMANDS_NAN = 4144;
+    public static final int T_COMMANDS_OUT_OF_RANGE = 4152;
+    public static final int T_COMMANDS_STALE = 4160;
+    public static final int T_RT_FLAGS = 4168;
+    public static final int T_MAX_TICK_NS = 4176;
+    public static final int T_HISTOGRAM = 4224;
+    /** Latency histogram: int32 counts of 1 µs bins; the last bin also holds everything later. */
+    public static final int HISTOGRAM_BINS = 2000;
+
+    // command slot
+    public static final int C_ISSUED_TICK = 12288;
+    public static final int C_TARGETS = 12296;
+    public static final int C_WHEEL_SPEED = 12392;
+    public static final int C_FLAGS = 12424;
+    /** C_FLAGS bit: the wheel speeds are to be driven (else the wheels are braked). */
+    public static final long FLAG_WHEELS = 1;
+
+    /** T_RT_FLAGS bits: what the real-time loop obtained. */
+    public static final long RT_SCHED_FIFO = 1;
+    public static final long RT_MLOCKALL = 2;
+    public static final long RT_DMA_LATENCY = 4;
+
+    /** A command older than this many ticks when the loop sees it is ignored and counted stale. */
+    public static final int STALE_TICKS = 100;
+}

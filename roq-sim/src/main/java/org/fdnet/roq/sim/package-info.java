@@ -1,0 +1,21 @@
+/**
+ * The simulated RoQ (a TITAN-VIII quadruped on MuJoCo 2.2.2) and its C joint loop, reached through JNI.
+ *
+ * <pre>
+ *  Course ──CourseLoader── file          RoqGeometry (every figure) ──▶ MjcfWriter ──▶ MJCF ─┐
+ *  Course ──▶ Heightfield ─────────────────────────────────────────────────────────────────▶ RoqNative.open
+ *
+ *              Java                            one direct buffer (SharedBlockLayout)          C (libroqsim.so)
+ *  JointCommand ──send()──▶ command slot (sequenced) ─────────────────▶ tick: read slot, validate, count bad
+ *                                                                        12 servos: PD → motor limits → torque
+ *                                                                        mj_step (MuJoCo)
+ *  SensorSnapshot ◀─read()── snapshot + LoopStatistics (seqlock) ◀────── sensors: joints, inclinometer, soles,
+ *                                                                        IR, ultrasonic, depth pixels, fragile cells
+ * </pre>
+ *
+ * In {@link org.fdnet.roq.sim.SimMode#REAL_TIME} the tick runs on a C thread at 1 kHz on absolute deadlines; in
+ * {@link org.fdnet.roq.sim.SimMode#STEPPED} the same tick runs {@code n} times per
+ * {@link org.fdnet.roq.sim.RoqSimulator#step(int)}. Java never calls into C per tick: it reads and writes the
+ * buffer. {@link org.fdnet.roq.sim.RoqNativeLibrary} loads the library and checks the ABI handshake.
+ */
+package org.fdnet.roq.sim;

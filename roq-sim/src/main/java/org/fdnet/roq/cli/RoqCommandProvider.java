@@ -7,7 +7,7 @@ import org.fdnet.cli.CommandProvider;
 public final class RoqCommandProvider implements CommandProvider {
     @Override
     public List<Object> commands() {
-        return List.of(new SimCommand());
+        return List.of(new SimCommand(), new DemoCommand());
     }
 
     @Override

@@ -23,6 +23,7 @@ import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.roq.sim.SimMode;
 import org.fdnet.roq.sim.SimOptions;
+import org.fdnet.roq.view.RoqScreenshot;
 import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.RuntimeOptions;
 import org.fdnet.runtime.RuntimeStartException;
@@ -53,6 +54,10 @@ public final class DemoCommand implements Callable<Integer> {
     @Option(names = "--logger", paramLabel = "HOST:PORT",
             description = "also record every event with the network state logger at HOST:PORT (see fdnet logger)")
     String logger;
+
+    @Option(names = "--screenshot", paramLabel = "FILE",
+            description = "at the end, render the robot and the terrain (top and side views) to this PNG")
+    Path screenshot;
 
     @Override
     public Integer call() throws Exception {
@@ -124,6 +129,10 @@ public final class DemoCommand implements Callable<Integer> {
                         fallen ? "  FALLEN" : "");
             }
             sim.statistics(stats);
+            if (screenshot != null) {
+                RoqScreenshot.write(s, sim.heightfield(), 1200, 700, screenshot);
+                System.out.println("screenshot: " + screenshot.toAbsolutePath());
+            }
         } catch (RuntimeStartException e) {
             System.err.println("fdnet demo: " + network + " does not start: " + e.getMessage());
             return 1;

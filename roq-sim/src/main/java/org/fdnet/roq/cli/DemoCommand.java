@@ -10,6 +10,10 @@ import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.client.ClientStatus;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
+import org.fdnet.logger.NetworkStateLogger;
+import org.fdnet.logger.config.LoggerConfig;
+import org.fdnet.logger.config.LoggerConfigFile;
+import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.xml.NetworkFileException;
@@ -52,8 +56,12 @@ public final class DemoCommand implements Callable<Integer> {
     Path network;
 
     @Option(names = "--logger", paramLabel = "HOST:PORT",
-            description = "also record every event with the network state logger at HOST:PORT (see fdnet logger)")
+            description = "record with a running network state logger at HOST:PORT (default: start one here, with its"
+                    + " embedded PostgreSQL)")
     String logger;
+
+    @Option(names = "--no-logger", description = "record nothing (count the events only)")
+    boolean noLogger;
 
     @Option(names = "--screenshot", paramLabel = "FILE",
             description = "at the end, render the robot and the terrain (top and side views) to this PNG")
@@ -78,6 +86,40 @@ public final class DemoCommand implements Callable<Integer> {
             System.err.println("fdnet demo: " + e.getMessage());
             return 2;
         }
+        if (noLogger && logger != null) {
+            System.err.println("fdnet demo: --logger and --no-logger exclude each other");
+            return 2;
+        }
+        NetworkStateLogger embedded = null;
+        if (!noLogger && logger == null) {
+            System.out.println("fdnet demo: starting the network state logger (embedded PostgreSQL) ...");
+            try {
+                LoggerConfig config = LoggerConfigFile.load(LoggerConfigFile.defaultPath());
+                config.set(LoggerSetting.RECEIVER_PORT, "0").set(LoggerSetting.SENDER_PORT, "0");
+                embedded = new NetworkStateLogger(config);
+                embedded.start();
+            } catch (Exception e) {
+                System.err.println("fdnet demo: the logger does not start: " + e.getMessage()
+                        + " (run with --no-logger to do without)");
+                if (embedded != null) {
+                    embedded.close();
+                }
+                return 1;
+            }
+            logger = "127.0.0.1:" + embedded.receiverPort();
+        }
+        try {
+            return run(embedded);
+        } finally {
+            if (embedded != null) {
+                embedded.stop();
+            }
+        }
+    }
+
+    private int run(NetworkStateLogger embedded) throws Exception {
+        Course c = CourseLoader.resolve(course);
+        NetworkInfo definition = NetworkRepository.load(network);
         LoggerClient client = null;
         if (logger != null) {
             try {
@@ -118,7 +160,7 @@ public final class DemoCommand implements Callable<Integer> {
             startX = s.groundTruthBodyPosition(0);
             startY = s.groundTruthBodyPosition(1);
             System.out.printf(Locale.ROOT, "fdnet demo: %s on course %s, real time, %d s%s%n", network, c.name(), seconds,
-                    client == null ? "" : ", recording with the logger at " + logger + " (run " + client.run() + ")");
+                    client == null ? ", not recorded" : ", recording with the logger at " + logger + " (run " + client.run() + ")");
             for (int second = 1; second <= seconds; second++) {
                 Thread.sleep(1000);
                 sim.read(s);
@@ -146,8 +188,9 @@ public final class DemoCommand implements Callable<Integer> {
         if (client != null) {
             client.close();
             ClientStatus st = client.status();
-            System.out.printf(Locale.ROOT, "logger: %,d of %,d events of run %s committed, %,d lost%n",
-                    st.acked(), st.accepted(), client.run(), st.lost());
+            System.out.printf(Locale.ROOT, "logger: %,d of %,d events of run %s committed to %s, %,d lost%n",
+                    st.acked(), st.accepted(), client.run(),
+                    embedded != null ? "the embedded PostgreSQL" : "the logger at " + logger, st.lost());
         }
         return fallen ? 1 : 0;
     }

@@ -34,12 +34,17 @@ final class Dataflow {
     private final LongAdder firings = new LongAdder();
     private final LongAdder writes = new LongAdder();
     private final long startNanos = System.nanoTime();
+    /** Simulated time, or {@code null} on the wall clock. */
+    private final DrivenClock driven;
+    private final long drivenStartMicros;
     private volatile Function<RelationNode, Servants> servants = r -> {
         throw new IllegalStateException("no servants in this network");
     };
 
-    Dataflow(EventPublisher events) {
+    Dataflow(EventPublisher events, DrivenClock driven) {
         this.events = events;
+        this.driven = driven;
+        this.drivenStartMicros = driven == null ? 0 : driven.micros();
     }
 
     void attach(Scheduler s) {
@@ -240,12 +245,19 @@ final class Dataflow {
         return true;
     }
 
+    /** Time now, µs since the epoch: the wall's, or the driven clock's. */
     long wallMicros() {
+        if (driven != null) {
+            return driven.micros();
+        }
         Instant now = Instant.now();
         return now.getEpochSecond() * 1_000_000L + now.getNano() / 1_000L;
     }
 
     double secondsSinceStart() {
+        if (driven != null) {
+            return (driven.micros() - drivenStartMicros) / 1e6;
+        }
         return (System.nanoTime() - startNanos) / 1e9;
     }
 }

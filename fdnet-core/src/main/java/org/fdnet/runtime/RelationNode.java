@@ -52,6 +52,8 @@ final class RelationNode {
     volatile List<NodeRef> missing = List.of();
     volatile long firings;
     ScheduledFuture<?> periodic;
+    /** On a driven clock: when the period next falls due, µs (0 when it has none). */
+    long nextDueMicros;
     /** The state text last reported as an event (structure lock). */
     String reportedState;
 

@@ -46,7 +46,10 @@ public final class RuntimeNetwork implements AutoCloseable {
     private final EventPublisher events;
     private final Dataflow flow;
     private final Scheduler scheduler;
+    /** {@code null} on a driven clock. */
     private final ScheduledExecutorService timer;
+    /** Simulated time, or {@code null} on the wall clock. */
+    private final DrivenClock driven;
     private final NodeClassResolver resolver;
     private final NodeFactory factory;
     private final ReentrantLock structure = new ReentrantLock();
@@ -72,14 +75,22 @@ public final class RuntimeNetwork implements AutoCloseable {
         this.options = options;
         this.events = new EventPublisher(options.clock());
         options.sinks().forEach(events::add);
-        this.flow = new Dataflow(events);
-        this.scheduler = new Scheduler(flow, options.workerThreads(), options.drainBudget(), options.inlineCallers());
+        this.driven = options.drivenClock();
+        this.flow = new Dataflow(events, driven);
+        if (driven == null) {
+            this.scheduler = new Scheduler(flow, options.workerThreads(), options.drainBudget(),
+                    options.inlineCallers());
+            this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
+                Thread t = new Thread(r, "fdnet-period");
+                t.setDaemon(true);
+                return t;
+            });
+        } else {
+            // simulated time: no threads of its own; the driver's thread runs every firing
+            this.scheduler = new Scheduler(flow, 0, options.drainBudget(), true);
+            this.timer = null;
+        }
         flow.attach(scheduler);
-        this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
-            Thread t = new Thread(r, "fdnet-period");
-            t.setDaemon(true);
-            return t;
-        });
         this.resolver = new NodeClassResolver(options.classLoading(), Data.class, Relation.class);
         this.factory = new NodeFactory(resolver, flow);
         this.definition = new NetworkInfo(definition.name());
@@ -346,7 +357,9 @@ public final class RuntimeNetwork implements AutoCloseable {
     }
 
     private void startPeriod(RelationNode node) {
-        if (node != null && node.periodMillis > 0) {
+        if (node != null && node.periodMillis > 0 && driven != null) {
+            node.nextDueMicros = driven.micros() + node.periodMillis * 1000L;
+        } else if (node != null && node.periodMillis > 0) {
             node.periodic = timer.scheduleAtFixedRate(() -> {
                 node.periodDue.set(true);
                 flow.requestOnPool(node);
@@ -539,6 +552,63 @@ public final class RuntimeNetwork implements AutoCloseable {
         return readDefinition(NetworkInfo::copy);
     }
 
+    /**
+     * On a driven clock: moves simulated time to {@code micros}, firing every period that falls due on the
+     * way in time order (Relations due at the same instant in the order they were created), each followed by
+     * everything it causes; returns when the network is quiet at {@code micros}. Runs on the caller's thread;
+     * call it from one thread (the driver).
+     *
+     * @throws IllegalStateException on the wall clock, or when the network is closed
+     * @throws IllegalArgumentException when {@code micros} lies before the clock's time
+     */
+    public void advanceTo(long micros) {
+        if (driven == null) {
+            throw new IllegalStateException("advanceTo needs a network started with RuntimeOptions.drivenClock;"
+                    + " this one runs on the wall clock");
+        }
+        if (closed) {
+            throw new IllegalStateException("the network is closed");
+        }
+        if (micros < driven.micros()) {
+            throw new IllegalArgumentException("advanceTo(" + micros + " µs) lies before the driven clock's "
+                    + driven.micros() + " µs");
+        }
+        scheduler.runQueuedHere();
+        List<RelationNode> due = new ArrayList<>();
+        while (true) {
+            long next = Long.MAX_VALUE;
+            for (RelationNode r : relations.values()) {
+                if (r.periodMillis > 0 && r.alive && r.nextDueMicros > 0 && r.nextDueMicros < next) {
+                    next = r.nextDueMicros;
+                }
+            }
+            if (next > micros) {
+                break;
+            }
+            driven.set(next);
+            due.clear();
+            for (RelationNode r : relations.values()) {
+                if (r.periodMillis > 0 && r.alive && r.nextDueMicros == next) {
+                    due.add(r);
+                }
+            }
+            due.sort(java.util.Comparator.comparingInt(r -> r.id));
+            for (RelationNode r : due) {
+                r.nextDueMicros += r.periodMillis * 1000L;
+                r.periodDue.set(true);
+                flow.request(r);
+                scheduler.runQueuedHere();
+            }
+        }
+        driven.set(micros);
+        scheduler.runQueuedHere();
+    }
+
+    /** The driven clock's time, µs; on the wall clock the wall time. */
+    public long timeMicros() {
+        return flow.wallMicros();
+    }
+
     void addListener(ChangeListener l) {
         listeners.add(l);
     }
@@ -559,7 +629,9 @@ public final class RuntimeNetwork implements AutoCloseable {
         } finally {
             structure.unlock();
         }
-        timer.shutdownNow();
+        if (timer != null) {
+            timer.shutdownNow();
+        }
         scheduler.close();
         for (RelationNode r : relations.values()) {
             r.alive = false;

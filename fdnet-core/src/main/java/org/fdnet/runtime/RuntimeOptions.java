@@ -17,6 +17,7 @@ public final class RuntimeOptions {
     private boolean inlineCallers = true;
     private ClassLoadingPolicy classLoading = ClassLoadingPolicy.builtInOnly();
     private EventClock clock = new EventClock();
+    private DrivenClock driven;
     private final List<EventSink> sinks = new ArrayList<>();
     private volatile boolean sealed;
 
@@ -74,6 +75,18 @@ public final class RuntimeOptions {
         return this;
     }
 
+    /**
+     * Runs the network on simulated time instead of the wall clock: no timer or worker threads; the driver
+     * calls {@link RuntimeNetwork#advanceTo} and every firing runs on its thread. Events are stamped from
+     * this clock (it replaces any {@link #clock(EventClock)}).
+     */
+    public RuntimeOptions drivenClock(DrivenClock c) {
+        checkOpen();
+        this.driven = java.util.Objects.requireNonNull(c, "drivenClock");
+        this.clock = new EventClock(c::micros);
+        return this;
+    }
+
     public RuntimeOptions sink(EventSink sink) {
         checkOpen();
         sinks.add(java.util.Objects.requireNonNull(sink, "sink"));
@@ -113,6 +126,11 @@ public final class RuntimeOptions {
 
     EventClock clock() {
         return clock;
+    }
+
+    /** The driven clock, or {@code null} on the wall clock. */
+    DrivenClock drivenClock() {
+        return driven;
     }
 
     List<EventSink> sinks() {

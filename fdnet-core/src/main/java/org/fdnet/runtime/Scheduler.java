@@ -123,6 +123,22 @@ final class Scheduler implements AutoCloseable {
         }
     }
 
+    /**
+     * Runs everything queued for the pool on the calling thread until nothing is left: a driven network's
+     * pool (it has no workers). Returns the number of Relations taken from the pool.
+     */
+    int runQueuedHere() {
+        LocalRun l = local.get();
+        int taken = 0;
+        RelationNode r;
+        while ((r = pool.poll()) != null) {
+            taken++;
+            l.queue.add(r);
+            drain(l);
+        }
+        return taken;
+    }
+
     int threads() {
         return workers.length;
     }

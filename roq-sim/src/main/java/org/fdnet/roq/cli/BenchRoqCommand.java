@@ -1,0 +1,110 @@
+package org.fdnet.roq.cli;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.netinfo.xml.NetworkFileException;
+import org.fdnet.netinfo.xml.NetworkRepository;
+import org.fdnet.roq.bridge.SimBridge;
+import org.fdnet.roq.sim.Course;
+import org.fdnet.roq.sim.CourseFormatException;
+import org.fdnet.roq.sim.CourseLoader;
+import org.fdnet.roq.sim.JointCommand;
+import org.fdnet.roq.sim.RoqSimulator;
+import org.fdnet.roq.sim.SensorSnapshot;
+import org.fdnet.roq.sim.SimMode;
+import org.fdnet.runtime.DrivenClock;
+import org.fdnet.runtime.RuntimeNetwork;
+import org.fdnet.runtime.RuntimeOptions;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code fdnet bench roq}: stepped speed of a RoQ network driving the simulator through the {@link SimBridge}
+ * (one network advance per 1 ms tick) beside the plant alone stepped the same way (a snapshot read and a
+ * command each tick, no network), in the same run, alternating second by second so the machine's load falls on
+ * both alike.
+ */
+@Command(name = "roq", mixinStandardHelpOptions = true,
+        description = "Stepped speed of a RoQ network + simulator beside the simulator alone (same run).")
+public final class BenchRoqCommand implements Callable<Integer> {
+    @Option(names = "--seconds", defaultValue = "30", description = "simulated seconds for each (default 30)")
+    int seconds;
+
+    @Option(names = "--course", defaultValue = "flat", description = "course (default flat)")
+    String course;
+
+    @Option(names = "--network", defaultValue = "networks/roq-walk.fdn", description = "network (default networks/roq-walk.fdn)")
+    Path network;
+
+    @Override
+    public Integer call() throws Exception {
+        Course c;
+        NetworkInfo definition;
+        try {
+            c = CourseLoader.resolve(course);
+            if (!Files.isRegularFile(network)) {
+                System.err.println("fdnet bench roq: no network file " + network.toAbsolutePath());
+                return 2;
+            }
+            definition = NetworkRepository.load(network);
+        } catch (CourseFormatException | NetworkFileException e) {
+            System.err.println("fdnet bench roq: " + e.getMessage());
+            return 2;
+        }
+        if (seconds < 1) {
+            System.err.println("fdnet bench roq: --seconds must be at least 1");
+            return 2;
+        }
+        System.out.printf(Locale.ROOT, "fdnet bench roq: %s on course %s, %d simulated s of each, 1 ms ticks, alternating%n",
+                network, c.name(), seconds);
+        long netNanos = 0;
+        long plantNanos = 0;
+        long firings;
+        try (RoqSimulator alone = RoqSimulator.open(c, SimMode.STEPPED);
+             RoqSimulator driven = RoqSimulator.open(c, SimMode.STEPPED);
+             RuntimeNetwork net = RuntimeNetwork.start(definition,
+                     RuntimeOptions.defaults().drivenClock(new DrivenClock(0)))) {
+            SimBridge bridge = SimBridge.stepped(net, driven, 0, 1);
+            SensorSnapshot s = new SensorSnapshot();
+            JointCommand command = new JointCommand();
+            bridge.run(1000); // warm-up
+            plantAlone(alone, s, command);
+            for (int second = 1; second <= seconds; second++) {
+                long t0 = System.nanoTime();
+                bridge.run(1000);
+                netNanos += System.nanoTime() - t0;
+                plantNanos += plantAlone(alone, s, command);
+                if (second % 10 == 0 || second == seconds) {
+                    System.out.printf(Locale.ROOT, "  %3d s: network + plant %.1f µs per tick, plant alone %.1f µs per tick%n",
+                            second, netNanos / 1e3 / (second * 1000.0), plantNanos / 1e3 / (second * 1000.0));
+                }
+            }
+            firings = net.firings();
+        }
+        double withNet = seconds / (netNanos / 1e9);
+        double plant = seconds / (plantNanos / 1e9);
+        System.out.printf(Locale.ROOT, "baseline: plant alone              %6.1f sim s per wall s (%.1f µs per tick)%n",
+                plant, plantNanos / 1e3 / (seconds * 1000.0));
+        System.out.printf(Locale.ROOT, "network + plant (stepped bridge)   %6.1f sim s per wall s (%.1f µs per tick, %,d firings)%n",
+                withNet, netNanos / 1e3 / (seconds * 1000.0), firings);
+        double ratio = withNet / plant;
+        System.out.printf(Locale.ROOT, "network + plant: %.2f× the plant alone (target ≥ 0.8: %s)%n",
+                ratio, ratio >= 0.8 ? "met" : "NOT met");
+        return 0;
+    }
+
+    /** 1000 ticks as the bridge steps them, without a network: step, read, send. Returns nanoseconds. */
+    private static long plantAlone(RoqSimulator sim, SensorSnapshot s, JointCommand command) {
+        long t0 = System.nanoTime();
+        for (int k = 0; k < 1000; k++) {
+            sim.step(1);
+            sim.read(s);
+            command.basedOnTick(s.tick());
+            sim.send(command);
+        }
+        return System.nanoTime() - t0;
+    }
+}

@@ -19,7 +19,6 @@ import javax.swing.JComponent;
 import javax.swing.JDialog;
 import javax.swing.JLabel;
 import javax.swing.JList;
-import javax.swing.JOptionPane;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JTabbedPane;
@@ -42,7 +41,7 @@ import org.fdnet.netinfo.ParameterType;
 /**
  * The Advanced Module frame (thesis Chapter 5 §IX): everything about one module, down to a node's parameters —
  * the module's name and load-at-start flag; a Nodes tab (kind, name, host, path, class, Save/Update, Delete,
- * Rename, and the parameter table with types); a Connections tab whose ends are chosen among existing nodes.
+ * Rename (to a used name: Merge/Replace), and the parameter table with types); a Connections tab whose ends are chosen among existing nodes.
  * A thin view: the logic is in {@link ModuleFormModel}, {@link NodeFormModel} and {@link ConnectionFormModel},
  * which share one {@link SpeedyDesign}; each widget registers as a child of the model component it shows.
  */
@@ -69,7 +68,8 @@ public final class AdvancedModuleFrame extends JDialog {
     final JTextField className = new JTextField(18);
     final JButton saveNode = new JButton("Save");
     final JButton deleteNode = new JButton("Delete");
-    final JButton renameNode = new JButton("Rename…");
+    final JTextField newName = new JTextField(14);
+    final JButton renameNode = new JButton("Rename");
     final JTextField paramName = new JTextField(10);
     final JComboBox<String> paramType = new JComboBox<>();
     final JTextField paramValue = new JTextField(14);
@@ -170,7 +170,7 @@ public final class AdvancedModuleFrame extends JDialog {
         node.setBorder(BorderFactory.createTitledBorder("Node"));
         row(node, 0, "Type :", nodeKind, "Host :", host, saveNode);
         row(node, 1, "Name :", nodeName, "Path :", path, deleteNode);
-        row(node, 2, null, null, "Class :", className, renameNode);
+        row(node, 2, "Rename to :", newName, "Class :", className, renameNode);
 
         JPanel params = new JPanel(new BorderLayout(4, 4));
         params.setBorder(BorderFactory.createTitledBorder("Parameters"));
@@ -347,23 +347,21 @@ public final class AdvancedModuleFrame extends JDialog {
         status.setText(refusal == null ? "parameter set; Save/Update the node to keep it" : "Refused: " + refusal);
     }
 
+    /** Renames the loaded node to the "Rename to" name; a name the module uses opens the Merge/Replace dialog. */
     private void rename() {
         if (nodeModel.loaded() == null) {
             return;
         }
-        String newName = JOptionPane.showInputDialog(this, "New name for " + nodeModel.loaded() + ":",
-                nodeModel.loaded().node());
-        if (newName == null) {
-            return;
-        }
-        EditResult r = MergeReplaceDialog.renameOrAsk(this, editor, nodeModel.loaded(), newName);
+        String target = newName.getText().strip();
+        EditResult r = MergeReplaceDialog.renameOrAsk(this, editor, nodeModel.loaded(), target);
         if (r == null) {
             status.setText("rename cancelled");
             return;
         }
-        show(r, "renamed to " + newName.strip());
+        show(r, "renamed to " + target);
         if (r.accepted()) {
-            nodeName.setText(newName.strip());
+            newName.setText("");
+            nodeName.setText(target);
         }
     }
 

@@ -1,5 +1,8 @@
 package org.fdnet.hi.text;
 
+import java.awt.Component;
+import java.awt.Container;
+import java.awt.Window;
 import java.awt.event.KeyEvent;
 import java.lang.reflect.InvocationTargetException;
 import java.nio.file.Path;
@@ -7,11 +10,13 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
 
+import javax.swing.AbstractButton;
 import javax.swing.JComboBox;
 import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
 
 import com.formdev.flatlaf.FlatLightLaf;
+import org.fdnet.hi.merge.MergeReplaceDialog;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.ConnectionKind;
 import org.fdnet.netinfo.ModuleCounts;
@@ -91,7 +96,14 @@ public final class TextFramesScenario {
         // a new node: fields typed, Save adds it, the other frames count it
         onEdt(() -> advanced.nodeName.setText(""));
         type(advanced.nodeName, "Brake");
-        onEdt(() -> check(advanced.saveNode.getText().equals("Save"), "Save for a new name"));
+        onEdt(() -> {
+            check(advanced.saveNode.getText().equals("Save"), "Save for a new name");
+            check(advanced.className.getText().equals("fdnet.SpeedData"), "a new name keeps the form (copy a node)");
+            advanced.className.setText("");
+            advanced.paramTable.setRowSelectionInterval(0, 0);
+            advanced.deleteParam.doClick();
+            check(advanced.paramRows.getRowCount() == 2, "a parameter deleted from the form");
+        });
         type(advanced.className, "fdnet.Brake");
         onEdt(() -> {
             advanced.saveNode.doClick();
@@ -183,11 +195,68 @@ public final class TextFramesScenario {
         onEdt(() -> FrameScreenshot.write(arm.get(), shots.resolve("text-basic-module.png")));
         step("basic frame renames module and deletes connection");
 
+        // renaming a node to a name the module uses asks Merge or Replace; Replace: Brake takes Command's place
+        onEdt(() -> advanced.nodeName.setText(""));
+        type(advanced.nodeName, "Brake");
+        type(advanced.newName, "Command");
+        SwingUtilities.invokeLater(advanced.renameNode::doClick); // the dialog is modal: click from a later event
+        Window dialog = awaitWindow(MergeReplaceDialog.class);
+        onEdt(() -> {
+            button(dialog, "Replace").doClick();
+            button(dialog, "OK").doClick();
+        });
+        onEdt(() -> {
+            check(!dialog.isShowing(), "dialog closed after OK");
+            check(network.node(new NodeRef("main", "Brake")) == null, "Brake's old name is gone");
+            check(network.node(SampleNetwork.COMMAND).className().equals("fdnet.Brake"), "Command is Brake's node now: "
+                    + network.node(SampleNetwork.COMMAND));
+            check(network.main().connections().equals(List.of(ConnectionInfo.reader(SampleNetwork.COMMAND,
+                    SampleNetwork.CONTROL))), "only Brake's connection remains, now to Command: " + network.main().connections());
+            check(advanced.nodeName.getText().equals("Command"), "the form shows the node under its new name");
+            check(advanced.saveNode.getText().equals("Update"), "and offers Update");
+            check(advanced.className.getText().equals("fdnet.Brake"), "with the replacement's class");
+        });
+        step("rename to a used name asks merge or replace");
+
         onEdt(() -> {
             arm.get().dispose();
             advanced.dispose();
             networkFrame.dispose();
         });
+    }
+
+    /** Waits (bounded) until a window of {@code type} shows; the modal dialog opens from a later event. */
+    private static Window awaitWindow(Class<? extends Window> type) throws Exception {
+        AtomicReference<Window> found = new AtomicReference<>();
+        long deadline = System.nanoTime() + 30_000_000_000L;
+        while (found.get() == null && System.nanoTime() < deadline) {
+            onEdt(() -> {
+                for (Window w : Window.getWindows()) {
+                    if (type.isInstance(w) && w.isShowing()) {
+                        found.set(w);
+                    }
+                }
+            });
+            Thread.sleep(50);
+        }
+        check(found.get() != null, type.getSimpleName() + " opened");
+        return found.get();
+    }
+
+    /** The button of {@code window} whose text is {@code text}, as a user finds it. */
+    private static AbstractButton button(Container container, String text) {
+        for (Component c : container.getComponents()) {
+            if (c instanceof AbstractButton b && text.equals(b.getText())) {
+                return b;
+            }
+            if (c instanceof Container inner) {
+                AbstractButton b = button(inner, text);
+                if (b != null) {
+                    return b;
+                }
+            }
+        }
+        return null;
     }
 
     private static List<String> items(JComboBox<String> combo) {

@@ -126,7 +126,7 @@ public final class CorbaBenchmark implements Runnable {
         progress("%nsustained: writing seq on bench-a as fast as one thread can for %d s ...", seconds);
         ArrivalCount count = new ArrivalCount(TimeUnit.SECONDS.toNanos(WINDOW_SECONDS));
         long sent = 0;
-        try (AutoCloseable observation = topology.observeSeq((value, origin) -> {
+        try (AutoCloseable observation = topology.observeSeq((value, fromHost, origin) -> {
             if (value instanceof Long v && v >= 0) {
                 count.arrived(v, System.nanoTime());
             }

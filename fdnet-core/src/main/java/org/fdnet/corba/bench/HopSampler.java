@@ -27,7 +27,7 @@ final class HopSampler implements AutoCloseable {
 
     HopSampler(BenchTopology topology) {
         this.topology = topology;
-        this.observation = topology.observeHops((value, origin) -> {
+        this.observation = topology.observeHops((value, fromHost, origin) -> {
             if (value instanceof Long oneWay && oneWay > 0) {
                 arrivals.offer(new long[] {oneWay, System.nanoTime()});
             }

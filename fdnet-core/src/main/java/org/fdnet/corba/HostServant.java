@@ -259,9 +259,9 @@ public final class HostServant extends HostPOA implements AutoCloseable {
                 notifier.publish(ChangeKind.LINK_OPENED, l.description() + " restored");
             }
         });
-        AutoCloseable observation = network.observe(ref, (value, origin) -> {
-            if (!toHost.equals(origin)) {
-                out.offer(value, ValueOrigin.current());
+        AutoCloseable observation = network.observe(ref, (value, fromHost, origin) -> {
+            if (!toHost.equals(fromHost)) {
+                out.offer(value, origin);
             }
         });
         Forwarding old = outbound.put(link, new Forwarding(out, ref, observation));

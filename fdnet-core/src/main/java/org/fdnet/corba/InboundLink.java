@@ -78,8 +78,7 @@ final class InboundLink {
             }
             seen.put(batch.originStream, originSeq);
             Object value = ValueCodec.decode(batch.values[i]);
-            ValueOrigin.during(new ValueOrigin(batch.originStream, originSeq),
-                    () -> network.inject(target, value, fromHost));
+            network.inject(target, value, fromHost, new ValueOrigin(batch.originStream, originSeq));
             applied++;
         }
         expected = Math.max(expected, end);

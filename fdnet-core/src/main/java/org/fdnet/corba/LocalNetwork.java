@@ -63,8 +63,12 @@ public interface LocalNetwork {
     /** A write from outside the network (an operator, a test): observers see origin {@code null}. */
     void write(NodeRef data, Object value);
 
-    /** A value that arrived over a link from {@code originHost}: set it and tell observers in order. */
-    void inject(NodeRef data, Object value, String originHost);
+    /**
+     * A value that arrived over a link from {@code originHost}, having entered the links at {@code origin}:
+     * set it and tell observers in order. Observers see both with this value only, never with values
+     * written because of it.
+     */
+    void inject(NodeRef data, Object value, String originHost, ValueOrigin origin);
 
     /** Tells {@code observer} every value of {@code data} from now on, in order; close to stop. */
     AutoCloseable observe(NodeRef data, ValueObserver observer);
@@ -89,9 +93,13 @@ public interface LocalNetwork {
         return Optional.empty();
     }
 
-    /** Receives every value of one Data on the thread that set it; must not block for long. */
+    /**
+     * Receives every value of one Data on the thread that set it; must not block for long. A value injected
+     * from a link comes with the host it came from and where it entered the links; a value written on this
+     * host (by an operator or a Relation) with {@code null} for both.
+     */
     @FunctionalInterface
     interface ValueObserver {
-        void onValue(Object value, String originHost);
+        void onValue(Object value, String originHost, ValueOrigin origin);
     }
 }

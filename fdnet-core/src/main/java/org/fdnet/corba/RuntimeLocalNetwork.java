@@ -33,13 +33,15 @@ import org.slf4j.LoggerFactory;
  * <p>The host keeps a definition of its own: nodes created here carry this host's name; stand-ins carry
  * their home host's, so the engine's {@link Placement} makes them local shadows (it does so once a local
  * Relation is connected to them). Every request is a change request of the engine's {@link Controller};
- * a refused one throws with the engine's reason. Values injected from a link are set with their origin
- * held in a thread-local: the engine tells its observers on the writing thread, so each observer learns
- * where the value came from and a link never echoes a value back to its sender.
+ * a refused one throws with the engine's reason. A value injected from a link is set with its origin held
+ * in a thread-local {@link Injection}: the engine tells its observers on the writing thread, so each
+ * observer of that Data learns where that value came from and a link never echoes it back to its sender.
+ * The origin belongs to the injected value only: what a Relation fired by it writes afterwards on the same
+ * thread is this host's own value (a controller's command goes back to the host its sensor is on).
  */
 public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(RuntimeLocalNetwork.class);
-    private static final ThreadLocal<String> ORIGIN = new ThreadLocal<>();
+    private static final ThreadLocal<Injection> INJECTING = new ThreadLocal<>();
 
     private final String hostName;
     private final RuntimeNetwork runtime;
@@ -190,18 +192,54 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
     }
 
     @Override
-    public void inject(NodeRef data, Object value, String originHost) {
-        ORIGIN.set(originHost);
+    public void inject(NodeRef data, Object value, String originHost, ValueOrigin origin) {
+        INJECTING.set(new Injection(data, originHost, origin));
         try {
             controller.setValue(data, toRuntime(value));
         } finally {
-            ORIGIN.remove();
+            INJECTING.remove();
         }
     }
 
     @Override
     public AutoCloseable observe(NodeRef data, ValueObserver observer) {
-        return controller.observe(data, (ref, id, value) -> observer.onValue(toJava(value), ORIGIN.get()));
+        return controller.observe(data, (ref, id, value) -> {
+            Injection injection = INJECTING.get();
+            if (injection != null && injection.isOf(ref, value)) {
+                observer.onValue(toJava(value), injection.host, injection.origin);
+            } else {
+                observer.onValue(toJava(value), null, null);
+            }
+        });
+    }
+
+    /**
+     * A value a link is setting on this thread. The engine stores it (telling the Data's observers) before
+     * its readers fire, so the first value of {@link #data} stored on this thread is the injected one; any
+     * later value — of that Data or another, written by a Relation the injected value fired — is local.
+     */
+    private static final class Injection {
+        private final NodeRef data;
+        private final String host;
+        private final ValueOrigin origin;
+        private Value stored;
+
+        Injection(NodeRef data, String host, ValueOrigin origin) {
+            this.data = data;
+            this.host = host;
+            this.origin = origin;
+        }
+
+        /** Whether {@code value}, stored in {@code ref}, is the injected value (each observer asks). */
+        boolean isOf(NodeRef ref, Value value) {
+            if (!data.equals(ref)) {
+                return false;
+            }
+            if (stored == null) {
+                stored = value;
+            }
+            return stored == value;
+        }
     }
 
     private void ensureModule(String module) {

@@ -50,7 +50,7 @@ class CrossHostLinkTest {
         observer = cluster.startLocalHost("observer", observerNetwork, small);
         baseNetwork.create(MAP, NodeInfo.data(MAP.node(), "LongData"));
         observerNetwork.create(SEEN, NodeInfo.data(SEEN.node(), "LongData"));
-        observerNetwork.observe(SEEN, (value, origin) -> {
+        observerNetwork.observe(SEEN, (value, fromHost, origin) -> {
             synchronized (received) {
                 received.add((Long) value);
             }

@@ -23,10 +23,10 @@ final class DataOnlyNetwork implements LocalNetwork {
         final List<ValueObserver> observers = new CopyOnWriteArrayList<>();
         Object value;
 
-        synchronized void set(Object v, String origin) {
+        synchronized void set(Object v, String fromHost, ValueOrigin origin) {
             value = v;
             for (ValueObserver o : observers) {
-                o.onValue(v, origin);
+                o.onValue(v, fromHost, origin);
             }
         }
 
@@ -88,12 +88,12 @@ final class DataOnlyNetwork implements LocalNetwork {
 
     @Override
     public void write(NodeRef data, Object value) {
-        cell(data).set(value, null);
+        cell(data).set(value, null, null);
     }
 
     @Override
-    public void inject(NodeRef data, Object value, String originHost) {
-        cell(data).set(value, originHost);
+    public void inject(NodeRef data, Object value, String originHost, ValueOrigin origin) {
+        cell(data).set(value, originHost, origin);
     }
 
     @Override

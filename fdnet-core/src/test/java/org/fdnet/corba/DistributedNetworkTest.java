@@ -55,7 +55,7 @@ class DistributedNetworkTest {
         MemoryEventSink events = new MemoryEventSink();
         deployment = NetworkDeployment.start(plan, cluster.directory(), Map.of("base", base.reference()),
                 DeploymentListener.quiet(), events, 4, 10_000, 100);
-        baseNetwork.observe(LOG, (value, origin) -> {
+        baseNetwork.observe(LOG, (value, fromHost, origin) -> {
             synchronized (seen) {
                 seen.add((Long) value);
             }

@@ -25,9 +25,9 @@ class InboundLinkTest {
     @BeforeEach
     void setUp() {
         network.create(MAP, NodeInfo.data("map", "LongData"));
-        network.observe(MAP, (v, origin) -> {
+        network.observe(MAP, (v, fromHost, origin) -> {
             values.add(v);
-            origins.add(origin);
+            origins.add(fromHost);
         });
         link = new InboundLink(7, MAP, "flyer", network, appliedByStream);
     }
@@ -73,13 +73,12 @@ class InboundLinkTest {
     @Test
     void shouldMarkInjectedValuesWithTheHostAndStreamTheyCameFrom() {
         List<ValueOrigin> current = new ArrayList<>();
-        network.observe(MAP, (v, origin) -> current.add(ValueOrigin.current()));
+        network.observe(MAP, (v, fromHost, origin) -> current.add(origin));
 
         link.deliver(batch(0, 42));
 
         assertThat(origins).containsExactly("flyer");
         assertThat(current).containsExactly(new ValueOrigin(STREAM, 0));
-        assertThat(ValueOrigin.current()).isNull();
         assertThat(link.applied()).isEqualTo(1);
     }
 

@@ -36,12 +36,12 @@ class RuntimeLocalNetworkTest {
                         new NodeInfo(NodeKind.DATA, "route", "", "", "DoubleData", List.of())),
                 List.of(ConnectionInfo.reader(MAP, PLAN), ConnectionInfo.writer(PLAN, ROUTE)));
         List<String> origins = new CopyOnWriteArrayList<>();
-        crawler.observe(MAP, (v, origin) -> origins.add(origin));
+        crawler.observe(MAP, (v, fromHost, origin) -> origins.add(fromHost));
         List<Object> routes = new CopyOnWriteArrayList<>();
-        crawler.observe(ROUTE, (v, origin) -> routes.add(v));
+        crawler.observe(ROUTE, (v, fromHost, origin) -> routes.add(v));
 
         assertThat(crawler.nodes()).contains(MAP, PLAN, ROUTE);
-        crawler.inject(MAP, 21.0, "flyer");
+        crawler.inject(MAP, 21.0, "flyer", new ValueOrigin("flyer#1#3", 0));
 
         long deadline = System.currentTimeMillis() + 5_000;
         while (!routes.contains(42.0) && System.currentTimeMillis() < deadline) {
@@ -49,5 +49,29 @@ class RuntimeLocalNetworkTest {
         }
         assertThat(routes).as("%s", crawler.runtime().controller().relationStates()).contains(42.0);
         assertThat(origins).containsExactly("flyer");
+    }
+
+    @Test
+    void shouldGiveTheOriginOnlyToTheInjectedValueNotToWhatARelationWritesBecauseOfIt() throws Exception {
+        crawler.createStandIn(MAP, new NodeInfo(NodeKind.DATA, "map", "flyer", "", "DoubleData", List.of()));
+        crawler.load("main", List.of(
+                        new NodeInfo(NodeKind.RELATION, "plan", "", "", "Expression",
+                                List.of(Parameter.named("expression", "2 * in0"))),
+                        new NodeInfo(NodeKind.DATA, "route", "", "", "DoubleData", List.of())),
+                List.of(ConnectionInfo.reader(MAP, PLAN), ConnectionInfo.writer(PLAN, ROUTE)));
+        ValueOrigin origin = new ValueOrigin("flyer#1#3", 7);
+        List<String> mapArrivals = new CopyOnWriteArrayList<>();
+        crawler.observe(MAP, (v, fromHost, o) -> mapArrivals.add(v + " from " + fromHost + " at " + o));
+        List<String> routeArrivals = new CopyOnWriteArrayList<>();
+        crawler.observe(ROUTE, (v, fromHost, o) -> routeArrivals.add(v + " from " + fromHost + " at " + o));
+
+        crawler.inject(MAP, 21.0, "flyer", origin);
+
+        long deadline = System.currentTimeMillis() + 5_000;
+        while (routeArrivals.isEmpty() && System.currentTimeMillis() < deadline) {
+            Thread.sleep(10);
+        }
+        assertThat(mapArrivals).containsExactly("21.0 from flyer at " + origin);
+        assertThat(routeArrivals).containsExactly("42.0 from null at null");
     }
 }

@@ -24,20 +24,19 @@ import org.fdnet.netinfo.NodeRef;
  * host runs the single-host engine; bench-b is a separate JVM.
  *
  * <pre>
- *   bench-a (this JVM)          bench-b (child JVM)                               bench-probe (this JVM)
- *   Data ping  ──link 1──▶ stand-in ping ─Reader─▶ Relation stamp ─Writer─▶ Data hop ──link 2──▶ Data hop
+ *   bench-a (this JVM)          bench-b (child JVM)                               bench-a / bench-probe (this JVM)
+ *   Data ping  ──link 1──▶ stand-in ping ─Reader─▶ Relation stamp ─Writer─▶ Data hop ──link 2──▶ bench-a: Data hop
  *                                                                                              (observer)
- *   Data seq   ──link 3──▶ stand-in seq  ─────────────────────────────────────────────link 4──▶ Data seq
+ *   Data seq   ──link 3──▶ stand-in seq  ─────────────────────────────────────────────link 4──▶ bench-probe: Data seq
  *                                                                                              (observer)
  * </pre>
  *
  * The round trip: a value written into bench-a's {@code ping} (its {@code nanoTime}) reaches the Relation
  * {@code stamp} on bench-b, which writes the one-way time into bench-b's Data {@code hop}; that comes back
- * to bench-probe's Data {@code hop}, a host with its own ORB in bench-a's JVM (two hops, two host
- * boundaries, timed on one clock). It cannot come back to bench-a itself: bench-b's link to bench-a drops
- * values whose origin is bench-a, and a Relation's output written while bench-a's value is injected (the
- * Relation runs inline on that thread) is taken for one. The rate: every value of {@code seq}
- * crosses to bench-b's Data and on to the probe, where each arrival is counted.
+ * to bench-a's Data {@code hop} (two hops, two host boundaries, timed on one clock) — the loop of a sensor
+ * and actuator on one host around a controller on another. The rate: every value of {@code seq} crosses to
+ * bench-b's Data and on to bench-probe, a host with its own ORB in bench-a's JVM, where each arrival is
+ * counted (a relayed value never goes back to the host it came from, so it cannot end on bench-a).
  */
 final class BenchTopology implements AutoCloseable {
     private static final String M = "bench";
@@ -104,10 +103,10 @@ final class BenchTopology implements AutoCloseable {
                 IdlMapping.spec(ConnectionInfo.reader(PING, STAMP)),
                 IdlMapping.spec(ConnectionInfo.writer(STAMP, HOP)),
                 IdlMapping.spec(ConnectionInfo.reader(SEQ, STAMP))});
-        probe.createNode(IdlMapping.spec(M, longData(HOP)));
+        a.createNode(IdlMapping.spec(M, longData(HOP)));
         probe.createNode(IdlMapping.spec(M, longData(SEQ)));
         link(1, PING, a, "bench-a", b, "bench-b", window);
-        link(2, HOP, b, "bench-b", probe, "bench-probe", window);
+        link(2, HOP, b, "bench-b", a, "bench-a", window);
         link(3, SEQ, a, "bench-a", b, "bench-b", window);
         link(4, SEQ, b, "bench-b", probe, "bench-probe", window);
     }
@@ -136,9 +135,9 @@ final class BenchTopology implements AutoCloseable {
         a.network().write(SEQ, value);
     }
 
-    /** Sees each one-way hop time (ns) as bench-b's Data {@code hop} comes back to bench-probe in this JVM. */
+    /** Sees each one-way hop time (ns) as bench-b's Data {@code hop} comes back to bench-a. */
     AutoCloseable observeHops(LocalNetwork.ValueObserver observer) {
-        return probe.network().observe(HOP, observer);
+        return a.network().observe(HOP, observer);
     }
 
     AutoCloseable observeSeq(LocalNetwork.ValueObserver observer) {
@@ -146,7 +145,7 @@ final class BenchTopology implements AutoCloseable {
     }
 
     String describe() {
-        return "bench-a:ping -> bench-b:stamp -> bench-b:hop -> bench-probe:hop; bench-a:seq -> bench-b:seq -> bench-probe";
+        return "bench-a:ping -> bench-b:stamp -> bench-b:hop -> bench-a:hop; bench-a:seq -> bench-b:seq -> bench-probe";
     }
 
     /** The process id of bench-b's JVM (for its CPU time). */

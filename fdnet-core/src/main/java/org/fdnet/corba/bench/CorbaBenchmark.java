@@ -13,7 +13,7 @@ import picocli.CommandLine.Model.CommandSpec;
 /**
  * {@code fdnet bench corba}: one run, all on 127.0.0.1 with a host in a child JVM, measures
  * <ol>
- *   <li>the round trip A → B → back to bench-probe in A's JVM (two hops through the real links and a Relation on B) against
+ *   <li>the round trip A → B → back to A (two hops through the real links and a Relation on B) against
  *       the bare JacORB two-way call (the headline ratio), and the one-way part of it against half the
  *       bare round trip;</li>
  *   <li>the same at realistic gaps (a value every 1, 10 and 100 ms: the links idle in between), each beside
@@ -126,7 +126,7 @@ public final class CorbaBenchmark implements Runnable {
         progress("%nsustained: writing seq on bench-a as fast as one thread can for %d s ...", seconds);
         ArrivalCount count = new ArrivalCount(TimeUnit.SECONDS.toNanos(WINDOW_SECONDS));
         long sent = 0;
-        try (AutoCloseable observation = topology.observeSeq((value, origin) -> {
+        try (AutoCloseable observation = topology.observeSeq((value, fromHost, origin) -> {
             if (value instanceof Long v && v >= 0) {
                 count.arrived(v, System.nanoTime());
             }

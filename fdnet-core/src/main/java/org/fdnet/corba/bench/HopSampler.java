@@ -11,7 +11,7 @@ import org.HdrHistogram.Histogram;
  * every {@code gap} (a sensor's rhythm: the links and ORB threads are idle in between):
  *
  * <pre>
- *   write nanoTime t0 into bench-a:ping ──▶ bench-b:stamp (one-way = now - t0) ──▶ bench-probe:hop ──▶ observer
+ *   write nanoTime t0 into bench-a:ping ──▶ bench-b:stamp (one-way = now - t0) ──▶ bench-a:hop ──▶ observer
  *   round trip = arrival in bench-a's JVM - t0            one-way = what stamp wrote
  *   baseline: bench-b's Host.ping() from bench-a's ORB, a bare JacORB two-way call, timed on bench-a
  * </pre>
@@ -27,7 +27,7 @@ final class HopSampler implements AutoCloseable {
 
     HopSampler(BenchTopology topology) {
         this.topology = topology;
-        this.observation = topology.observeHops((value, origin) -> {
+        this.observation = topology.observeHops((value, fromHost, origin) -> {
             if (value instanceof Long oneWay && oneWay > 0) {
                 arrivals.offer(new long[] {oneWay, System.nanoTime()});
             }
@@ -100,7 +100,7 @@ final class HopSampler implements AutoCloseable {
         try {
             long[] arrival = arrivals.poll(10, TimeUnit.SECONDS);
             if (arrival == null) {
-                throw new IllegalStateException("hop sample " + sample + " did not come back to bench-probe within 10 s");
+                throw new IllegalStateException("hop sample " + sample + " did not come back to bench-a within 10 s");
             }
             return arrival;
         } catch (InterruptedException e) {

@@ -114,6 +114,9 @@ public class CrawlGait extends Relation {
                 double from = -stride / 2 - shorten[leg];
                 x = from + (stride / 2 - from) * s;
                 lift = clearance * Math.sin(Math.PI * s);
+                if (probes && s > 0.5) {
+                    lift = clearance / 2 + lift / 2; // lands clearance/2 above the foothold, where probing starts
+                }
                 inAir |= q == quarter;
             } else {
                 double s = (u - SWING) / (1 - SWING);

@@ -11,9 +11,9 @@ import org.fdnet.runtime.Value;
 /**
  * Probe the ground — the thesis's "active movement sense": before the gait puts weight on a new foothold, the
  * swung foot is lowered until its sole reads {@code testForce} N (default 55: above a fragile cell's 40 N, below
- * the ~65 N a foot carries when three feet hold the robot) and held there. Ground that bears the test force for
- * {@code hold} s (default 0.25) is accepted. Ground that gives way — the sole force collapses below a quarter of
- * the test force after having passed 60 % of it (the cell broke under the probe, not under the robot), or the
+ * the ~65 N a foot carries when three feet hold the robot) and held there. Ground that bears it (at least 90 % of
+ * it) for {@code hold} s (default 0.25) is accepted. Ground that gives way — the sole force (a 30 ms running mean) stays below a
+ * quarter of the test force for 50 ms after having passed 60 % of it (the cell broke under the probe, not under the robot), or the
  * foot went {@code maxPress} m (default 0.08) down without finding the force — is rejected, and the gait
  * chooses another foothold. While the probe presses, the balance keeps the body over the three other feet, so a
  * breaking cell costs the robot nothing.
@@ -31,6 +31,13 @@ public class ProbeGround extends Relation {
     private double pressSpeed;
     private double maxPress;
 
+    /** Time constant of the sole force's running mean, s. */
+    private static final double SMOOTHING = 0.03;
+    /** How long the force must stay collapsed to call the ground given way, s. */
+    private static final double GIVE_WAY = 0.05;
+
+    private double force = Double.NaN;
+    private double lowSince = Double.NaN;
     private int probing = -1;
     private long attempt;
     private boolean announced;
@@ -104,22 +111,32 @@ public class ProbeGround extends Relation {
         if (decided) {
             return;
         }
-        double force = soles.element(leg);
+        // the sole's contact chatters from one millisecond to the next: judge a 30 ms running mean
+        double raw = soles.element(leg);
+        force = Double.isNaN(force) ? raw : force + (raw - force) * (1 - Math.exp(-dt / SMOOTHING));
         peak = Math.max(peak, force);
         if (peak >= 0.6 * testForce && force < 0.25 * testForce) {
-            decide(c, leg, -1, String.format(Locale.ROOT, "gave way: %.0f N after %.0f N", force, peak));
-            return;
-        }
-        if (force >= testForce) {
-            if (Double.isNaN(heldSince)) {
-                heldSince = now;
+            if (Double.isNaN(lowSince)) {
+                lowSince = now;
             }
+            if (now - lowSince >= GIVE_WAY) {
+                decide(c, leg, -1, String.format(Locale.ROOT, "gave way: %.0f N after %.0f N", force, peak));
+                return;
+            }
+        } else {
+            lowSince = Double.NaN;
+        }
+        if (Double.isNaN(heldSince) && force >= testForce) {
+            heldSince = now; // the test force is reached: stop lowering, hold the foot where it is
+        } else if (!Double.isNaN(heldSince) && force < 0.9 * testForce) {
+            heldSince = Double.NaN; // it sagged: press on
+        }
+        if (!Double.isNaN(heldSince)) {
             if (now - heldSince >= hold) {
                 decide(c, leg, +1, String.format(Locale.ROOT, "holds %.0f N", force));
                 return;
             }
         } else {
-            heldSince = Double.NaN;
             depth += pressSpeed * dt;
             if (depth >= maxPress) {
                 decide(c, leg, -1, String.format(Locale.ROOT, "no footing %.2f m down", maxPress));
@@ -134,6 +151,8 @@ public class ProbeGround extends Relation {
         probing = leg;
         depth = 0;
         heldSince = Double.NaN;
+        lowSince = Double.NaN;
+        force = Double.NaN;
         peak = 0;
         decided = false;
     }

@@ -5,7 +5,11 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.nio.file.Path;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.xml.NetworkRepository;
+import java.util.List;
+import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.CourseLoader;
+import org.fdnet.roq.sim.FragileCell;
+import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SimMode;
 import org.fdnet.runtime.DrivenClock;
@@ -25,7 +29,11 @@ class RoqRubbleTest {
     }
 
     static Run run(String course, int seconds, String... unloaded) throws Exception {
-        try (RoqSimulator sim = RoqSimulator.open(CourseLoader.resolve(course), SimMode.STEPPED);
+        return run(CourseLoader.resolve(course), seconds, unloaded);
+    }
+
+    static Run run(Course course, int seconds, String... unloaded) throws Exception {
+        try (RoqSimulator sim = RoqSimulator.open(course, SimMode.STEPPED);
              RuntimeNetwork net = RuntimeNetwork.start(NetworkRepository.load(RUBBLE),
                      RuntimeOptions.defaults().drivenClock(new DrivenClock(0)))) {
             for (String module : unloaded) {
@@ -59,16 +67,9 @@ class RoqRubbleTest {
                     if (!probing) {
                         brokenWhileLoaded += nowBroken - broken;
                     }
-                    System.out.printf("t=%.2f broken %d probing=%s phase=%s%n", bridge.lastSnapshot().simTime(),
-                            nowBroken, probing, phase);
                     broken = nowBroken;
                 }
                 fallen |= value(net, "fallen", "main").asBoolean();
-                if (t % 500 == 0) {
-                    System.out.printf("t=%.1f x=%.3f z=%.3f rej=%d acc=%d broken=%d fallen=%s%n",
-                            bridge.lastSnapshot().simTime(), bridge.lastSnapshot().groundTruthBodyPosition(0) - x0,
-                            bridge.lastSnapshot().groundTruthBodyPosition(2), rejected, accepted, broken, fallen);
-                }
             }
             return new Run(bridge.lastSnapshot().groundTruthBodyPosition(0) - x0, fallen, rejected, accepted, broken,
                     brokenWhileLoaded);
@@ -83,13 +84,38 @@ class RoqRubbleTest {
         }
     }
 
+    /** Flat ground with a fragile cell (40 N) right where the first swung foot, hind-right, comes down. */
+    private static Course cellUnderTheFirstFoothold() {
+        double[] foot = new double[3];
+        RoqGeometry.footInBody(3, RoqGeometry.STANDING_POSE[0], RoqGeometry.STANDING_POSE[1],
+                RoqGeometry.STANDING_POSE[2], foot);
+        Course flat = Course.flat();
+        double stride = 0.15;
+        return flat.withFragileCells(List.of(new FragileCell(flat.startX() + foot[0] + stride / 2,
+                flat.startY() + foot[1], 0.24, 0.24, 0.03, 40)));
+    }
+
     @Test
-    void shouldCrossTheFragileCourseProbingAndAvoidingItsFragileCells() throws Exception {
-        Run r = run("fragile", 120);
-        System.out.println(r);
-        assertThat(r.fallen()).isFalse();
+    void shouldRejectAFootholdOnAFragileCellSoThatOnlyTheProbeBreaksIt() throws Exception {
+        Run r = run(cellUnderTheFirstFoothold(), 20);
         assertThat(r.rejected()).as("footholds rejected by probing").isGreaterThanOrEqualTo(1);
+        assertThat(r.broken()).as("the cell gave way under the probe").isEqualTo(1);
         assertThat(r.brokenWhileLoaded()).as("cells broken under a loaded foot").isZero();
-        assertThat(r.distance()).as("metres crossed").isGreaterThanOrEqualTo(2.0);
+        assertThat(r.fallen()).isFalse();
+        assertThat(r.distance()).as("metres walked on").isGreaterThan(0.2);
+    }
+
+    @Test
+    void shouldBreakTheCellUnderTheFirstFootholdWhenModuleProbingIsUnloaded() throws Exception {
+        Run r = run(cellUnderTheFirstFoothold(), 20, "Probing");
+        assertThat(r.rejected()).isZero();
+        assertThat(r.brokenWhileLoaded()).as("cells broken under a loaded foot").isEqualTo(1);
+    }
+
+    @Test
+    void shouldBreakThroughAFragileCellWhenModuleProbingIsUnloaded() throws Exception {
+        Run r = run("fragile", 90, "Probing");
+        assertThat(r.rejected()).isZero();
+        assertThat(r.brokenWhileLoaded()).as("cells broken under a loaded foot").isGreaterThanOrEqualTo(1);
     }
 }

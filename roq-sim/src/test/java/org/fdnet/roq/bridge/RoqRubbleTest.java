@@ -96,6 +96,15 @@ class RoqRubbleTest {
     }
 
     @Test
+    void shouldAcceptEveryFootholdOnFlatGroundAndWalkOn() throws Exception {
+        Run r = run(Course.flat(), 30);
+        assertThat(r.rejected()).as("footholds rejected on solid flat ground").isZero();
+        assertThat(r.accepted()).as("footholds probed and accepted in 30 s (each probe pauses the gait)").isGreaterThanOrEqualTo(10);
+        assertThat(r.fallen()).isFalse();
+        assertThat(r.distance()).as("metres walked").isGreaterThan(0.3);
+    }
+
+    @Test
     void shouldRejectAFootholdOnAFragileCellSoThatOnlyTheProbeBreaksIt() throws Exception {
         Run r = run(cellUnderTheFirstFoothold(), 20);
         assertThat(r.rejected()).as("footholds rejected by probing").isGreaterThanOrEqualTo(1);

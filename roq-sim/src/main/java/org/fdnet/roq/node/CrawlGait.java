@@ -15,6 +15,13 @@ import org.fdnet.runtime.Value;
  * Writer order, (0) the feet's centres in the body frame (12 numbers) for a body {@code height} m high (default
  * 0.27) and (1) the gait phase {leg whose quarter it is, 1 while that leg is in the air else 0}. Needs a
  * {@code period}. Its phase only moves while it fires: held, it stops the walk where it is; resumed, it goes on.
+ *
+ * <p>Probing (when a Reader connects the verdict of {@link ProbeGround} and it is there, i.e. module Probing is
+ * loaded): at each touchdown the gait stops with the swung foot {@code clearance}/2 above its foothold and writes
+ * a third phase number, a new probe attempt; it waits until the verdict answers that attempt. Accepted, it steps
+ * on. Rejected, it chooses a shorter step ({@code retreat} m, default 0.08, further back) and probes again, at
+ * most {@code tries} times (default 3); the last foothold is stepped on whatever the verdict, and reported. If the
+ * verdict disappears (Probing unloaded), it steps on without probing.
  */
 public class CrawlGait extends Relation {
     /** hr, fr, hl, fl. */
@@ -31,6 +38,13 @@ public class CrawlGait extends Relation {
     private double phase;
     private double lastSeconds = Double.NaN;
     private double maxStep;
+    private double retreat;
+    private int tries;
+    private final double[] shorten = new double[LEGS];
+    private int probingLeg = -1;
+    private int rejections;
+    private long attempt;
+    private long unprobedSteps;
 
     @Override
     protected void init(NodeParameters p) {
@@ -50,6 +64,14 @@ public class CrawlGait extends Relation {
         if (height < 0.15 || height > 0.4) {
             throw p.invalid("height", "must lie between 0.15 and 0.4 m, was " + height);
         }
+        retreat = p.doubleValue("retreat", 0.08);
+        tries = (int) p.longValue("tries", 3);
+        if (retreat < 0 || retreat > stride + 0.1) {
+            throw p.invalid("retreat", "must lie between 0 and stride + 0.1 m, was " + retreat);
+        }
+        if (tries < 1 || tries > 10) {
+            throw p.invalid("tries", "must lie between 1 and 10, was " + tries);
+        }
         maxStep = 4 * p.longValue("period", 10) / 1000.0;
         double[] foot = new double[3];
         for (int leg = 0; leg < LEGS; leg++) {
@@ -63,10 +85,16 @@ public class CrawlGait extends Relation {
     @Override
     protected void compute(RelationContext c) {
         double now = c.seconds();
-        if (!Double.isNaN(lastSeconds)) {
+        boolean probes = c.inputCount() > 0 && c.input(0) != null;
+        if (probingLeg >= 0) {
+            awaitVerdict(c, probes);
+        }
+        if (!Double.isNaN(lastSeconds) && probingLeg < 0) {
             // a held gait does not fire: its phase waits; after a resume it goes on from there
+            double before = phase;
             phase += Math.min(maxStep, Math.max(0, now - lastSeconds)) / cycle;
             phase -= Math.floor(phase);
+            stopAtTouchdown(before, probes);
         }
         lastSeconds = now;
         int quarter = Math.min(3, (int) (phase * 4));
@@ -77,14 +105,22 @@ public class CrawlGait extends Relation {
             u -= Math.floor(u);
             double x;
             double lift = 0;
-            if (u < SWING) {
+            if (leg == probingLeg) {
+                x = stride / 2 - shorten[leg];
+                lift = clearance / 2;
+                inAir = true;
+            } else if (u < SWING) {
                 double s = u / SWING;
-                x = -stride / 2 + stride * s;
+                double from = -stride / 2 - shorten[leg];
+                x = from + (stride / 2 - from) * s;
                 lift = clearance * Math.sin(Math.PI * s);
+                if (probes && s > 0.5) {
+                    lift = clearance / 2 + lift / 2; // lands clearance/2 above the foothold, where probing starts
+                }
                 inAir |= q == quarter;
             } else {
                 double s = (u - SWING) / (1 - SWING);
-                x = stride / 2 - stride * s;
+                x = stride / 2 - shorten[leg] - stride * s;
             }
             feet[3 * leg] = home[3 * leg] + x;
             feet[3 * leg + 1] = home[3 * leg + 1];
@@ -92,7 +128,56 @@ public class CrawlGait extends Relation {
         }
         c.output(0, Value.ofDoubles(feet));
         if (c.outputCount() > 1) {
-            c.output(1, Value.ofDoubles(ORDER[quarter], inAir ? 1 : 0));
+            c.output(1, c.inputCount() > 0
+                    ? Value.ofDoubles(ORDER[quarter], inAir ? 1 : 0, probingLeg >= 0 ? attempt : 0)
+                    : Value.ofDoubles(ORDER[quarter], inAir ? 1 : 0));
         }
+    }
+
+    /** With probing, a swing that reached its touchdown in this period stops there and a probe attempt starts. */
+    private void stopAtTouchdown(double before, boolean probes) {
+        int q = Math.min(3, (int) (before * 4));
+        double touchdown = q * 0.25 + SHIFT + SWING;
+        double travelled = phase - before + (phase < before ? 1 : 0);
+        double toTouchdown = touchdown - before;
+        if (toTouchdown <= 0 || toTouchdown > travelled) {
+            return;
+        }
+        int leg = ORDER[q];
+        shorten[leg] = 0;
+        if (!probes) {
+            return;
+        }
+        phase = touchdown - Math.floor(touchdown);
+        probingLeg = leg;
+        rejections = 0;
+        attempt++;
+    }
+
+    private void awaitVerdict(RelationContext c, boolean probes) {
+        if (!probes) {
+            probingLeg = -1; // Probing unloaded: step on
+            unprobedSteps++;
+            return;
+        }
+        Value v = c.input(0);
+        if (v.length() < 3 || (long) v.element(2) != attempt || (int) v.element(0) != probingLeg) {
+            return;
+        }
+        if (v.element(1) > 0) {
+            probingLeg = -1;
+            return;
+        }
+        rejections++;
+        if (rejections >= tries) {
+            unprobedSteps++;
+            c.report("leg " + probingLeg + ": " + rejections + " footholds rejected, stepping on the last ("
+                    + unprobedSteps + " so far)");
+            probingLeg = -1;
+            return;
+        }
+        shorten[probingLeg] += retreat;
+        attempt++;
+        c.report("leg " + probingLeg + ": foothold rejected, a step " + shorten[probingLeg] + " m shorter");
     }
 }

@@ -13,7 +13,8 @@ import static org.fdnet.roq.sim.RoqGeometry.*;
  * <p>Bodies: {@code body} (free joint {@code root}) → per leg {@code L_coxa} (joint {@code L_yaw}) →
  * {@code L_thigh} ({@code L_lift}) → {@code L_shank} ({@code L_knee}) → {@code L_wheel} ({@code L_wheel}, geom
  * {@code L_foot}). Joint order in qpos: root, then per leg yaw, lift, knee, wheel; the C side checks it.
- * Collisions: robot geoms only touch the terrain and fragile cells, never each other. Robot geoms are in geom
+ * The world has a {@code floor} plane at the heightfield's lowest point, under and around the course.
+ * Collisions: robot geoms only touch the terrain, the floor and fragile cells, never each other. Robot geoms are in geom
  * group 1, the ground in group 0: the range sensors cast their rays at group 0 only.
  */
 public final class MjcfWriter {
@@ -37,6 +38,11 @@ public final class MjcfWriter {
                 terrain.rows(), terrain.cols(), course.length() / 2, course.width() / 2, elevation));
         x.append("  </asset>\n  <worldbody>\n");
         x.append(f("    <geom name=\"terrain\" type=\"hfield\" hfield=\"terrain\" pos=\"0 0 %s\"%s/>\n",
+                terrain.minHeight(), GROUND));
+        // The floor: an endless plane at the heightfield's lowest point, so a robot that leaves the course lands
+        // on it instead of falling forever (the heightfield has no ground outside its extent). Inside the
+        // course the heightfield is at or above it. The range sensors' rays do not see it (roq_ray.c).
+        x.append(f("    <geom name=\"floor\" type=\"plane\" size=\"0 0 1\" pos=\"0 0 %s\"%s/>\n",
                 terrain.minHeight(), GROUND));
         List<FragileCell> cells = course.fragileCells();
         for (int i = 0; i < cells.size(); i++) {

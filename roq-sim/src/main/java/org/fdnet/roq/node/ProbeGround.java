@@ -1,0 +1,185 @@
+package org.fdnet.roq.node;
+
+import static org.fdnet.roq.sim.RoqGeometry.LEGS;
+
+import java.util.Locale;
+import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.Relation;
+import org.fdnet.runtime.RelationContext;
+import org.fdnet.runtime.Value;
+
+/**
+ * Probe the ground — the thesis's "active movement sense": before the gait puts weight on a new foothold, the
+ * swung foot is lowered until its sole reads {@code testForce} N (default 55: above a fragile cell's 40 N, below
+ * the ~65 N a foot carries when three feet hold the robot) and held there. Ground that bears it (at least 90 % of
+ * it) for {@code hold} s (default 0.25) is accepted. Ground that gives way — the sole force (a 30 ms running mean) stays below a
+ * quarter of the test force for 50 ms after having passed 60 % of it (the cell broke under the probe, not under the robot), or the
+ * foot went {@code maxPress} m (default 0.08) down without finding the force — is rejected, and the gait
+ * chooses another foothold. While the probe presses, the balance keeps the body over the three other feet, so a
+ * breaking cell costs the robot nothing.
+ *
+ * <p>Inputs, in Reader order: the gait phase {leg, in the air, probe attempt (a new positive number for every
+ * foothold the gait waits on, 0 otherwise)} and the sole forces (4, N). Outputs, in Writer order: (0) the press:
+ * an offset to add to the feet (12 numbers, only the probed foot's z is non-zero: how far it is lowered) and
+ * (1) the verdict {leg, +1 accepted / −1 rejected, the attempt it answers};
+ * the gait reads (1). Reports the footholds accepted and rejected.
+ */
+public class ProbeGround extends Relation {
+    private final double[] press = new double[3 * LEGS];
+    private double testForce;
+    private double hold;
+    private double pressSpeed;
+    private double maxPress;
+
+    /** Time constant of the sole force's running mean, s. */
+    private static final double SMOOTHING = 0.03;
+    /** How long the force must stay collapsed to call the ground given way, s. */
+    private static final double GIVE_WAY = 0.05;
+
+    private double force = Double.NaN;
+    private double lowSince = Double.NaN;
+    private int probing = -1;
+    private long attempt;
+    private boolean announced;
+    private double depth;
+    private double last = Double.NaN;
+    private double heldSince = Double.NaN;
+    private double peak;
+    private boolean decided;
+    private long accepted;
+    private long rejected;
+
+    @Override
+    protected void init(NodeParameters p) {
+        testForce = p.doubleValue("testForce", 55);
+        hold = p.doubleValue("hold", 0.25);
+        pressSpeed = p.doubleValue("pressSpeed", 0.1);
+        maxPress = p.doubleValue("maxPress", 0.08);
+        if (!(testForce > 0)) {
+            throw p.invalid("testForce", "must be more than 0 N, was " + testForce);
+        }
+        if (!(hold > 0) || hold > 2) {
+            throw p.invalid("hold", "must lie between 0 and 2 s, was " + hold);
+        }
+        if (!(pressSpeed > 0) || pressSpeed > 1) {
+            throw p.invalid("pressSpeed", "must lie between 0 and 1 m/s, was " + pressSpeed);
+        }
+        if (!(maxPress > 0) || maxPress > 0.2) {
+            throw p.invalid("maxPress", "must lie between 0 and 0.2 m, was " + maxPress);
+        }
+    }
+
+    /** Footholds accepted so far. */
+    public long accepted() {
+        return accepted;
+    }
+
+    /** Footholds rejected so far: ground that gave way under the probe. */
+    public long rejected() {
+        return rejected;
+    }
+
+    @Override
+    protected void compute(RelationContext c) {
+        Value phase = c.input(0);
+        Value soles = c.input(1);
+        double now = c.seconds();
+        double dt = Double.isNaN(last) ? 0 : Math.max(0, now - last);
+        last = now;
+        if (!announced && c.outputCount() > 1) {
+            c.output(1, Value.ofDoubles(-1, 0, 0)); // "no verdict yet": tells the gait that probing is loaded
+            announced = true;
+        }
+        if (phase == null || soles == null || phase.length() < 3 || soles.length() < LEGS) {
+            c.report("waiting for the gait phase and the sole forces");
+            return;
+        }
+        int leg = (int) phase.element(0);
+        if (phase.element(2) < 0.5 || leg < 0 || leg >= LEGS) {
+            if (probing >= 0) {
+                probing = -1;
+                attempt = 0;
+                depth = 0;
+                writePress(c, -1);
+            }
+            return;
+        }
+        long attempt = (long) phase.element(2);
+        if (attempt != this.attempt) {
+            start(leg, attempt);
+        }
+        if (decided) {
+            return;
+        }
+        // the sole's contact chatters from one millisecond to the next: judge a 30 ms running mean
+        double raw = soles.element(leg);
+        force = Double.isNaN(force) ? raw : force + (raw - force) * (1 - Math.exp(-dt / SMOOTHING));
+        peak = Math.max(peak, force);
+        if (peak >= 0.6 * testForce && force < 0.25 * testForce) {
+            if (Double.isNaN(lowSince)) {
+                lowSince = now;
+            }
+            if (now - lowSince >= GIVE_WAY) {
+                decide(c, leg, -1, String.format(Locale.ROOT, "gave way: %.0f N after %.0f N", force, peak));
+                return;
+            }
+        } else {
+            lowSince = Double.NaN;
+        }
+        if (Double.isNaN(heldSince) && force >= testForce) {
+            heldSince = now; // the test force is reached: stop lowering, hold the foot where it is
+        } else if (!Double.isNaN(heldSince) && force < 0.9 * testForce) {
+            heldSince = Double.NaN; // it sagged: press on
+        }
+        if (!Double.isNaN(heldSince)) {
+            if (now - heldSince >= hold) {
+                decide(c, leg, +1, String.format(Locale.ROOT, "holds %.0f N", force));
+                return;
+            }
+        } else {
+            depth += pressSpeed * dt;
+            if (depth >= maxPress) {
+                decide(c, leg, -1, String.format(Locale.ROOT, "no footing %.2f m down", maxPress));
+                return;
+            }
+        }
+        writePress(c, leg);
+    }
+
+    private void start(int leg, long attempt) {
+        this.attempt = attempt;
+        probing = leg;
+        depth = 0;
+        heldSince = Double.NaN;
+        lowSince = Double.NaN;
+        force = Double.NaN;
+        peak = 0;
+        decided = false;
+    }
+
+    private void decide(RelationContext c, int leg, int verdict, String why) {
+        decided = true;
+        if (verdict < 0) {
+            depth = 0; // lift off ground that gave way; an accepted foot stays pressed until the gait steps on
+        }
+        if (verdict > 0) {
+            accepted++;
+        } else {
+            rejected++;
+        }
+        writePress(c, leg);
+        if (c.outputCount() > 1) {
+            c.output(1, Value.ofDoubles(leg, verdict, attempt));
+        }
+        c.report("leg " + leg + (verdict > 0 ? " accepted: " : " rejected: ") + why + "; " + accepted
+                + " footholds accepted, " + rejected + " rejected");
+    }
+
+    private void writePress(RelationContext c, int leg) {
+        java.util.Arrays.fill(press, 0);
+        if (leg >= 0) {
+            press[3 * leg + 2] = -depth;
+        }
+        c.output(0, Value.ofDoubles(press));
+    }
+}

@@ -79,6 +79,11 @@ public final class DemoCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        if (gui && java.awt.GraphicsEnvironment.isHeadless()) {
+            System.err.println("fdnet demo: --gui needs a display and there is none ($DISPLAY is not set);"
+                    + " --screenshot FILE without --gui draws the window off-screen");
+            return 2;
+        }
         if (runFor.toMillis() < 1000) {
             System.err.println("fdnet demo: --for must be at least 1 s, was " + runFor.toMillis() + " ms");
             return 2;

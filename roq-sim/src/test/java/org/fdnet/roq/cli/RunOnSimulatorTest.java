@@ -2,28 +2,25 @@ package org.fdnet.roq.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.fdnet.cli.FdnetCommand;
+import org.fdnet.testing.CliRun;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import picocli.CommandLine;
 
 /** {@code fdnet run FILE --sim COURSE}: the core's run command joins the network to RoQ's simulator via roq-sim. */
 @Timeout(value = 120, unit = TimeUnit.SECONDS)
 class RunOnSimulatorTest {
     static final String WALK = Path.of("..", "networks", "roq-walk.fdn").toAbsolutePath().normalize().toString();
 
+    private final CliRun cli = new CliRun();
+
     @Test
     void shouldDriveTheSimulatorWithTheNetworksCommands() {
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        int code = run(out, err, "run", WALK, "--sim", "flat", "--for", "3s");
-        String text = out + "\n" + err;
+        int code = cli.fdnet("run", WALK, "--sim", "flat", "--for", "3s");
+        String text = cli.output();
         assertThat(code).as(text).isZero();
         assertThat(text).contains("simulated RoQ on course flat", "simulated RoQ: ");
         Matcher m = Pattern.compile("([\\d,]+) commands applied").matcher(text);
@@ -34,17 +31,8 @@ class RunOnSimulatorTest {
 
     @Test
     void shouldRefuseAnUnknownCourseNamingIt() {
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        int code = run(out, err, "run", WALK, "--sim", "no-such-course", "--for", "3s");
+        int code = cli.fdnet("run", WALK, "--sim", "no-such-course", "--for", "3s");
         assertThat(code).isEqualTo(2);
-        assertThat(err.toString()).contains("--sim no-such-course", "no-such-course");
-    }
-
-    private static int run(StringWriter out, StringWriter err, String... args) {
-        CommandLine cli = FdnetCommand.commandLine();
-        cli.setOut(new PrintWriter(out, true));
-        cli.setErr(new PrintWriter(err, true));
-        return cli.execute(args);
+        assertThat(cli.output()).contains("--sim no-such-course: no-such-course");
     }
 }

@@ -6,7 +6,7 @@
 #ifndef ROQ_LAYOUT_H
 #define ROQ_LAYOUT_H
 
-#define ROQ_LAYOUT_VERSION 2
+#define ROQ_LAYOUT_VERSION 3
 #define ROQ_BLOCK_SIZE 16384
 
 #define ROQ_JOINTS 12
@@ -16,6 +16,7 @@
 #define ROQ_MAX_FRAGILE 256
 #define ROQ_HIST_BINS 2000
 #define ROQ_STALE_TICKS 100
+#define ROQ_REFLEX_BINS 16
 
 /* header */
 #define L_LAYOUT_VERSION 0
@@ -55,7 +56,10 @@
 #define T_COMMANDS_STALE 4160
 #define T_RT_FLAGS 4168
 #define T_MAX_TICK_NS 4176
+#define T_LAST_APPLIED_TICK 4184
+#define T_LAST_APPLIED_BASED_ON 4192
 #define T_HISTOGRAM 4224
+#define T_REFLEX_HISTOGRAM 12224 /* int32 x ROQ_REFLEX_BINS: ticks from the snapshot a command is based on to the first snapshot computed under it */
 
 /* command slot (under the command sequence, written by Java) */
 #define C_ISSUED_TICK 12288

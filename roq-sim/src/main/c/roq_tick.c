@@ -81,6 +81,11 @@ static void take_command(roq_sim *s) {
         s->wheel_target[i] = v;
     }
     (*BLK_L(st, T_COMMANDS_APPLIED))++;
+    /* reflex latency: applied now, the command first shows in snapshot tick + 1 */
+    *BLK_L(st, T_LAST_APPLIED_TICK) = s->tick;
+    *BLK_L(st, T_LAST_APPLIED_BASED_ON) = issued;
+    int64_t reflex = s->tick + 1 - issued;
+    BLK_I(st, T_REFLEX_HISTOGRAM)[reflex < 0 ? 0 : (reflex >= ROQ_REFLEX_BINS ? ROQ_REFLEX_BINS - 1 : reflex)]++;
 }
 
 /*
@@ -254,6 +259,7 @@ static void publish(roq_sim *s) {
         BLK_I(s->block, T_HISTOGRAM)[s->histogram_bin] = BLK_I(s->stage, T_HISTOGRAM)[s->histogram_bin];
         s->histogram_bin = -1;
     }
+    memcpy(s->block + T_REFLEX_HISTOGRAM, s->stage + T_REFLEX_HISTOGRAM, 4 * ROQ_REFLEX_BINS);
     s->snapshot_seq += 2;
     __atomic_store_n(seq, s->snapshot_seq, __ATOMIC_RELEASE);
 }

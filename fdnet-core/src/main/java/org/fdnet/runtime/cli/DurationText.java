@@ -5,8 +5,8 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import picocli.CommandLine.ITypeConverter;
 
-/** Reads durations as people write them: {@code 5s}, {@code 500ms}, {@code 2m}, {@code 1.5s}, {@code 1h}. */
-final class DurationText implements ITypeConverter<Duration> {
+/** Reads durations as people write them: {@code 5s}, {@code 500ms}, {@code 2m}, {@code 1.5s}, {@code 1h}; a bare number is seconds. Shared by {@code fdnet run --for} and {@code fdnet demo --for}. */
+public final class DurationText implements ITypeConverter<Duration> {
     private static final Pattern FORM = Pattern.compile("(\\d+(?:\\.\\d+)?)\\s*(ms|s|m|h)?");
 
     @Override

@@ -72,6 +72,11 @@ public final class RunCommand implements Callable<Integer> {
             description = "another folder node classes may be loaded from (besides the file's folder)")
     List<Path> allowedRoots = new ArrayList<>();
 
+    @Option(names = "--sim", paramLabel = "COURSE",
+            description = "join the network to a simulated plant on this course, in real time (RoQ's simulator, from"
+                    + " roq-sim: flat, slope, rubble, fragile or a course file)")
+    String simCourse;
+
     @Option(names = "--workers", paramLabel = "N", description = "worker threads (default: one per core)")
     Integer workers;
 
@@ -113,6 +118,12 @@ public final class RunCommand implements Callable<Integer> {
             }
             out.printf("recording events with the logger at %s (run %s)%n", logger, loggerClient.run());
         }
+        if (simCourse != null && distribution.appliesTo(definition)) {
+            err.println("--sim runs the network on this machine only; it does not combine with a distributed run");
+            err.flush();
+            closeLogger(out, loggerClient);
+            return 2;
+        }
         if (distribution.appliesTo(definition)) {
             EventSink events = loggerClient == null ? counter : both(counter, loggerClient);
             try {
@@ -146,6 +157,18 @@ public final class RunCommand implements Callable<Integer> {
             closeLogger(out, loggerClient);
             return 1;
         }
+        SimulatedPlant.Run plant = null;
+        if (simCourse != null) {
+            try {
+                plant = attachPlant(network, out);
+            } catch (IllegalArgumentException | IllegalStateException e) {
+                err.println("--sim " + simCourse + ": " + e.getMessage());
+                err.flush();
+                network.close();
+                closeLogger(out, loggerClient);
+                return 2;
+            }
+        }
         CountDownLatch stop = new CountDownLatch(1);
         CountDownLatch summarized = new CountDownLatch(1);
         // Ctrl-C: stop the run, and keep the JVM alive until the summary is printed (at most 5 s)
@@ -173,9 +196,20 @@ public final class RunCommand implements Callable<Integer> {
                     break;
                 }
                 status(out, network, counter, started);
+                if (plant != null) {
+                    out.println("  " + plant.status());
+                    out.flush();
+                }
             }
             summary(out, definition, network, counter, started);
+            if (plant != null) {
+                out.println(plant.summary());
+                out.flush();
+            }
         } finally {
+            if (plant != null) {
+                plant.close();
+            }
             network.close();
             closeLogger(out, loggerClient);
             summarized.countDown();
@@ -206,6 +240,14 @@ public final class RunCommand implements Callable<Integer> {
     }
 
     /** Waits (bounded) until the logger committed every event, then says how it went. */
+    /** The one {@link SimulatedPlant} on the class path joined to {@code network}. */
+    private SimulatedPlant.Run attachPlant(RuntimeNetwork network, PrintWriter out) {
+        SimulatedPlant plant = java.util.ServiceLoader.load(SimulatedPlant.class).findFirst()
+                .orElseThrow(() -> new IllegalStateException("no simulated plant on the class path (roq-sim provides"
+                        + " RoQ's simulator)"));
+        return plant.attach(network, simCourse, out);
+    }
+
     private void closeLogger(PrintWriter out, LoggerClient client) {
         if (client == null) {
             return;

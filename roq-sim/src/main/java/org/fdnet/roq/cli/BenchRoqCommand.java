@@ -22,16 +22,28 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /**
- * {@code fdnet bench roq}: stepped speed of a RoQ network driving the simulator through the {@link SimBridge}
- * (one network advance per 1 ms tick) beside the plant alone stepped the same way (a snapshot read and a
- * command each tick, no network), in the same run, alternating second by second so the machine's load falls on
- * both alike.
+ * {@code fdnet bench roq}, in two parts.
+ * <ol type="a">
+ *   <li>Stepped speed of a RoQ network driving the simulator through the {@link SimBridge} (one network advance
+ *   per 1 ms tick) beside the plant alone stepped the same way (a snapshot read and a command each tick, no
+ *   network), in the same run, alternating second by second so the machine's load falls on both alike.</li>
+ *   <li>{@link ReflexLatencyBench Reflex latency} in real time, the network recording with a logger, beside a bare
+ *   Java echo of the snapshot's tick into the command slot.</li>
+ * </ol>
  */
 @Command(name = "roq", mixinStandardHelpOptions = true,
-        description = "Stepped speed of a RoQ network + simulator beside the simulator alone (same run).")
+        description = "(a) stepped speed of a RoQ network + simulator beside the simulator alone; (b) real-time reflex"
+                + " latency, snapshot to applied command, beside a bare Java echo (same run).")
 public final class BenchRoqCommand implements Callable<Integer> {
-    @Option(names = "--seconds", defaultValue = "30", description = "simulated seconds for each (default 30)")
+    @Option(names = "--seconds", defaultValue = "60",
+            description = "seconds for each measurement: simulated in (a), wall in (b) (default 60)")
     int seconds;
+
+    @Option(names = "--part", defaultValue = "ab", description = "a, b or ab (default ab)")
+    String part;
+
+    @Option(names = "--no-logger", description = "(b) without recording (default: record with a logger started here)")
+    boolean noLogger;
 
     @Option(names = "--course", defaultValue = "flat", description = "course (default flat)")
     String course;
@@ -55,9 +67,23 @@ public final class BenchRoqCommand implements Callable<Integer> {
             return 2;
         }
         if (seconds < 1) {
-            System.err.println("fdnet bench roq: --seconds must be at least 1");
+            System.err.println("fdnet bench roq: --seconds must be at least 1, was " + seconds);
             return 2;
         }
+        if (!part.matches("a|b|ab")) {
+            System.err.println("fdnet bench roq: --part must be a, b or ab, was " + part);
+            return 2;
+        }
+        if (part.contains("a")) {
+            stepped(c, definition);
+        }
+        if (part.contains("b")) {
+            return new ReflexLatencyBench(c, definition, network, seconds, !noLogger).run();
+        }
+        return 0;
+    }
+
+    private void stepped(Course c, NetworkInfo definition) throws Exception {
         System.out.printf(Locale.ROOT, "fdnet bench roq: %s on course %s, %d simulated s of each, 1 ms ticks, alternating%n",
                 network, c.name(), seconds);
         long netNanos = 0;
@@ -93,7 +119,6 @@ public final class BenchRoqCommand implements Callable<Integer> {
         double ratio = withNet / plant;
         System.out.printf(Locale.ROOT, "network + plant: %.2f× the plant alone (target ≥ 0.8: %s)%n",
                 ratio, ratio >= 0.8 ? "met" : "NOT met");
-        return 0;
     }
 
     /** 1000 ticks as the bridge steps them, without a network: step, read, send. Returns nanoseconds. */

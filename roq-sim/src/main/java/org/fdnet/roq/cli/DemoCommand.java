@@ -4,16 +4,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import java.util.concurrent.atomic.LongAdder;
-import org.fdnet.event.EventSink;
-import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.client.ClientStatus;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.logger.NetworkStateLogger;
-import org.fdnet.logger.config.LoggerConfig;
-import org.fdnet.logger.config.LoggerConfigFile;
-import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.xml.NetworkFileException;
@@ -27,7 +21,13 @@ import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.roq.sim.SimMode;
 import org.fdnet.roq.sim.SimOptions;
-import org.fdnet.roq.view.RoqScreenshot;
+import org.fdnet.roq.view.DemoFigures;
+import org.fdnet.roq.view.RoqDemoPanel;
+import org.fdnet.roq.view.RoqDemoWindow;
+import org.fdnet.runtime.cli.DurationText;
+import javax.swing.SwingUtilities;
+import java.io.IOException;
+import java.time.Duration;
 import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.RuntimeOptions;
 import org.fdnet.runtime.RuntimeStartException;
@@ -37,14 +37,23 @@ import picocli.CommandLine.Option;
 
 /**
  * {@code fdnet demo}: a RoQ network (default networks/roq-walk.fdn) on the real-time simulator, joined by the
- * real-time {@link SimBridge}; a progress line each second and a summary at the end. With {@code --logger}
+ * real-time {@link SimBridge}; a progress line each second and a summary at the end, with the figures a
+ * {@link DemoMeter} reads from the network (stability margin, probes, fragile cells). {@code --gui} shows it live in
+ * a {@link RoqDemoWindow}; {@code --screenshot} renders that window's content to a PNG. With {@code --logger}
  * every event also goes to a running {@code fdnet logger}.
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
         description = "RoQ walking on the real-time simulator under an FDNet network, with a progress line each second.")
 public final class DemoCommand implements Callable<Integer> {
-    @Option(names = "--for", defaultValue = "30", paramLabel = "SECONDS", description = "how long to run, s (default 30)")
-    int seconds;
+    /** The window and the figures are refreshed this often; the progress line is printed each second. */
+    private static final long FRAME_MILLIS = 100;
+
+    @Option(names = "--for", defaultValue = "30", paramLabel = "DURATION", converter = DurationText.class,
+            description = "how long to run: 30s, 2m, or plain seconds (default 30)")
+    Duration runFor;
+
+    @Option(names = "--gui", description = "show the robot live in a window (top and side views, live figures)")
+    boolean gui;
 
     @Option(names = "--course", defaultValue = "flat", description = "course: flat, slope, rubble, fragile or a file (default flat)")
     String course;
@@ -64,13 +73,19 @@ public final class DemoCommand implements Callable<Integer> {
     boolean noLogger;
 
     @Option(names = "--screenshot", paramLabel = "FILE",
-            description = "at the end, render the robot and the terrain (top and side views) to this PNG")
+            description = "at the end, render the demo window (robot, terrain, path, live figures) to this PNG;"
+                    + " works without --gui too (drawn off-screen)")
     Path screenshot;
 
     @Override
     public Integer call() throws Exception {
-        if (seconds < 1) {
-            System.err.println("fdnet demo: --for must be at least 1 s, was " + seconds);
+        if (gui && java.awt.GraphicsEnvironment.isHeadless()) {
+            System.err.println("fdnet demo: --gui needs a display and there is none ($DISPLAY is not set);"
+                    + " --screenshot FILE without --gui draws the window off-screen");
+            return 2;
+        }
+        if (runFor.toMillis() < 1000) {
+            System.err.println("fdnet demo: --for must be at least 1 s, was " + runFor.toMillis() + " ms");
             return 2;
         }
         Course c;
@@ -94,16 +109,10 @@ public final class DemoCommand implements Callable<Integer> {
         if (!noLogger && logger == null) {
             System.out.println("fdnet demo: starting the network state logger (embedded PostgreSQL) ...");
             try {
-                LoggerConfig config = LoggerConfigFile.load(LoggerConfigFile.defaultPath());
-                config.set(LoggerSetting.RECEIVER_PORT, "0").set(LoggerSetting.SENDER_PORT, "0");
-                embedded = new NetworkStateLogger(config);
-                embedded.start();
+                embedded = LocalLogger.start();
             } catch (Exception e) {
                 System.err.println("fdnet demo: the logger does not start: " + e.getMessage()
                         + " (run with --no-logger to do without)");
-                if (embedded != null) {
-                    embedded.close();
-                }
                 return 1;
             }
             logger = "127.0.0.1:" + embedded.receiverPort();
@@ -129,62 +138,75 @@ public final class DemoCommand implements Callable<Integer> {
                 return 2;
             }
         }
-        LongAdder events = new LongAdder();
-        LoggerClient recording = client;
-        EventSink counter = new EventSink() {
-            @Override
-            public void accept(NetworkEvent event) {
-                events.increment();
-                if (recording != null) {
-                    recording.accept(event);
-                }
-            }
-
-            @Override
-            public void flush() {
-                if (recording != null) {
-                    recording.flush();
-                }
-            }
-        };
+        DemoMeter meter = new DemoMeter(client);
         SimOptions simOptions = new SimOptions(SimMode.REAL_TIME, SimOptions.DEFAULT_PRIORITY, true, seed, 0.0);
         SensorSnapshot s = new SensorSnapshot();
         LoopStatistics stats = new LoopStatistics();
+        long seconds = Math.max(1, runFor.toMillis() / 1000);
         double startX;
         double startY;
         boolean fallen = false;
+        DemoFigures figures = DemoFigures.none();
+        RoqDemoWindow window = null;
         try (RoqSimulator sim = RoqSimulator.open(c, simOptions);
-             RuntimeNetwork net = RuntimeNetwork.start(definition, RuntimeOptions.defaults().sink(counter));
+             RuntimeNetwork net = RuntimeNetwork.start(definition, RuntimeOptions.defaults().sink(meter));
              SimBridge bridge = SimBridge.realTime(net, sim)) {
+            meter.lookUpCounters(net);
             sim.read(s);
             startX = s.groundTruthBodyPosition(0);
             startY = s.groundTruthBodyPosition(1);
             System.out.printf(Locale.ROOT, "fdnet demo: %s on course %s, real time, %d s%s%n", network, c.name(), seconds,
                     client == null ? ", not recorded" : ", recording with the logger at " + logger + " (run " + client.run() + ")");
-            for (int second = 1; second <= seconds; second++) {
-                Thread.sleep(1000);
-                sim.read(s);
-                fallen = isFallen(net);
-                System.out.printf(Locale.ROOT, "  t=%5.1f s  distance %.3f m  height %.3f m  roll %+.3f  pitch %+.3f  broken cells %d"
-                                + "  events %,d%s%n", s.simTime(), s.groundTruthBodyPosition(0) - startX,
-                        s.groundTruthBodyPosition(2), s.roll(), s.pitch(), s.brokenCellCount(), events.sum(),
-                        fallen ? "  FALLEN" : "");
+            if (gui) {
+                window = RoqDemoWindow.open("FDNet demo: " + definition.name() + " on " + c.name(), sim.heightfield());
             }
+            long frames = runFor.toMillis() / FRAME_MILLIS;
+            long t0 = System.nanoTime();
+            for (long frame = 1; frame <= frames; frame++) {
+                long due = t0 + frame * FRAME_MILLIS * 1_000_000L;
+                long wait = due - System.nanoTime();
+                if (wait > 0) {
+                    Thread.sleep(wait / 1_000_000L, (int) (wait % 1_000_000L));
+                }
+                sim.read(s);
+                sim.statistics(stats);
+                fallen = isFallen(net);
+                figures = meter.figures(net, s, startX, stats, fallen);
+                if (window != null) {
+                    if (!window.isShowing()) {
+                        System.out.println("fdnet demo: the window was closed; stopping");
+                        window = null;
+                        break;
+                    }
+                    show(window, s, figures);
+                }
+                if (frame % (1000 / FRAME_MILLIS) == 0) {
+                    System.out.println(figures.progressLine());
+                }
+            }
+            sim.read(s);
             sim.statistics(stats);
+            figures = meter.figures(net, s, startX, stats, fallen);
             if (screenshot != null) {
-                RoqScreenshot.write(s, sim.heightfield(), 1200, 700, screenshot);
+                writeScreenshot(window, s, figures, sim);
                 System.out.println("screenshot: " + screenshot.toAbsolutePath());
             }
         } catch (RuntimeStartException e) {
             System.err.println("fdnet demo: " + network + " does not start: " + e.getMessage());
             return 1;
+        } finally {
+            if (window != null) {
+                window.close();
+            }
         }
-        System.out.printf(Locale.ROOT, "summary: walked %.3f m forward (%.3f m sideways) in %.1f s; %s; broken cells %d%n",
+        System.out.printf(Locale.ROOT, "summary: walked %.3f m forward (%.3f m sideways) in %.1f s; %s; smallest stability"
+                        + " margin %s; probes %s; fragile cells found %s, avoided %s, broken %d%n",
                 s.groundTruthBodyPosition(0) - startX, s.groundTruthBodyPosition(1) - startY, s.simTime(),
-                fallen ? "FELL" : "no fall", s.brokenCellCount());
+                fallen ? "FELL" : "no fall", DemoFigures.metres(figures.smallestMargin()), DemoFigures.count(figures.probes()),
+                DemoFigures.count(figures.fragileFound()), DemoFigures.count(figures.fragileAvoided()), s.brokenCellCount());
         System.out.printf(Locale.ROOT, "loop: %,d ticks, %,d overruns, wake-up p99 %.1f µs (max %.1f µs)%n", stats.ticks(),
                 stats.overruns(), stats.latencyPercentileNanos(99) / 1e3, stats.maxLatencyNanos() / 1e3);
-        System.out.printf(Locale.ROOT, "events: %,d logged by the network%n", events.sum());
+        System.out.printf(Locale.ROOT, "events: %,d logged by the network%n", meter.events());
         if (client != null) {
             client.close();
             ClientStatus st = client.status();
@@ -193,6 +215,32 @@ public final class DemoCommand implements Callable<Integer> {
                     embedded != null ? "the embedded PostgreSQL" : "the logger at " + logger, st.lost());
         }
         return fallen ? 1 : 0;
+    }
+
+    private static void show(RoqDemoWindow window, SensorSnapshot s, DemoFigures figures) {
+        SensorSnapshot copy = new SensorSnapshot();
+        copy.copyFrom(s);
+        SwingUtilities.invokeLater(() -> window.panel().show(copy, figures));
+    }
+
+    /** The window's content as it is now; without --gui, the same panel laid out off-screen with the last figures. */
+    private void writeScreenshot(RoqDemoWindow window, SensorSnapshot s, DemoFigures figures, RoqSimulator sim)
+            throws Exception {
+        Exception[] failed = new Exception[1];
+        SwingUtilities.invokeAndWait(() -> {
+            try {
+                RoqDemoPanel panel = window != null ? window.panel() : new RoqDemoPanel(sim.heightfield());
+                if (window == null) {
+                    panel.show(s, figures);
+                }
+                panel.writePng(screenshot);
+            } catch (IOException e) {
+                failed[0] = e;
+            }
+        });
+        if (failed[0] != null) {
+            throw failed[0];
+        }
     }
 
     private static boolean isFallen(RuntimeNetwork net) {

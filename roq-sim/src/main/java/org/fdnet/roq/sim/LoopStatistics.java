@@ -22,6 +22,9 @@ public final class LoopStatistics {
     private long realtimeFlags;
     private long maxTickNanos;
     private final int[] histogram = new int[HISTOGRAM_BINS];
+    private long lastAppliedTick;
+    private long lastAppliedBasedOn;
+    private final int[] reflex = new int[REFLEX_BINS];
 
     void copyFrom(ByteBuffer b) {
         ticks = b.getLong(T_TICKS);
@@ -37,6 +40,11 @@ public final class LoopStatistics {
         maxTickNanos = b.getLong(T_MAX_TICK_NS);
         for (int i = 0; i < HISTOGRAM_BINS; i++) {
             histogram[i] = b.getInt(T_HISTOGRAM + 4 * i);
+        }
+        lastAppliedTick = b.getLong(T_LAST_APPLIED_TICK);
+        lastAppliedBasedOn = b.getLong(T_LAST_APPLIED_BASED_ON);
+        for (int i = 0; i < REFLEX_BINS; i++) {
+            reflex[i] = b.getInt(T_REFLEX_HISTOGRAM + 4 * i);
         }
     }
 
@@ -137,5 +145,44 @@ public final class LoopStatistics {
     /** Whether /dev/cpu_dma_latency is held at 0. */
     public boolean dmaLatencyHeld() {
         return (realtimeFlags & RT_DMA_LATENCY) != 0;
+    }
+
+    /** The tick counter when the loop applied the last command (0 before the first). */
+    public long lastAppliedTick() {
+        return lastAppliedTick;
+    }
+
+    /** The snapshot tick the last applied command was based on. */
+    public long lastAppliedBasedOn() {
+        return lastAppliedBasedOn;
+    }
+
+    /**
+     * Commands applied whose reflex latency was {@code ticks} ticks (1 ms each): from the snapshot the command was
+     * based on to the first snapshot computed under it; the last bin ({@link SharedBlockLayout#REFLEX_BINS} - 1)
+     * also counts every later one.
+     */
+    public long reflexCount(int ticks) {
+        return reflex[ticks];
+    }
+
+    /** The reflex latency below or at which {@code percentile} % of applied commands fall, ticks (0 with none). */
+    public int reflexPercentileTicks(double percentile) {
+        long total = 0;
+        for (int c : reflex) {
+            total += c;
+        }
+        if (total == 0) {
+            return 0;
+        }
+        long rank = (long) Math.ceil(percentile / 100.0 * total);
+        long seen = 0;
+        for (int i = 0; i < REFLEX_BINS; i++) {
+            seen += reflex[i];
+            if (seen >= rank) {
+                return i;
+            }
+        }
+        return REFLEX_BINS - 1;
     }
 }

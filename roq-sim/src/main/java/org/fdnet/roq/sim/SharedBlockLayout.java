@@ -11,7 +11,9 @@ package org.fdnet.roq.sim;
  *  8      int64  snapshot sequence: odd while the loop writes, even when the snapshot is consistent
  *  16     int64  command sequence:  odd while Java writes the command slot, even when it is complete
  *  64     snapshot  (written by C once per tick under the snapshot sequence)
- *  4096   loop statistics (same sequence)
+ *  4096   loop statistics (same sequence), with the tick at which the last command was applied and the
+ *         snapshot tick it was based on (4184, 4192; version 3)
+ *  12224  reflex histogram (same sequence; version 3)
  *  12288  command slot (written by Java under the command sequence, read by C at the start of a tick)
  *  16384  end
  * </pre>
@@ -21,7 +23,7 @@ public final class SharedBlockLayout {
     }
 
     /** Layout version; changes whenever an offset does. */
-    public static final int VERSION = 2;
+    public static final int VERSION = 3;
     /** Size of the block, bytes. */
     public static final int BLOCK_SIZE = 16384;
 
@@ -62,7 +64,18 @@ public final class SharedBlockLayout {
     public static final int T_COMMANDS_STALE = 4160;
     public static final int T_RT_FLAGS = 4168;
     public static final int T_MAX_TICK_NS = 4176;
+    /** The tick counter when the loop applied the last command (it first shows in snapshot tick + 1). */
+    public static final int T_LAST_APPLIED_TICK = 4184;
+    /** The snapshot tick that last applied command was based on ({@link #C_ISSUED_TICK}). */
+    public static final int T_LAST_APPLIED_BASED_ON = 4192;
     public static final int T_HISTOGRAM = 4224;
+    /**
+     * Reflex histogram: int32 counts of applied commands by ticks from the snapshot the command was based on to
+     * the first snapshot computed under it (1 = applied at the very next tick); the last bin also holds later ones.
+     */
+    public static final int T_REFLEX_HISTOGRAM = 12224;
+    /** Bins of {@link #T_REFLEX_HISTOGRAM}. */
+    public static final int REFLEX_BINS = 16;
     /** Latency histogram: int32 counts of 1 µs bins; the last bin also holds everything later. */
     public static final int HISTOGRAM_BINS = 2000;
 

@@ -22,7 +22,8 @@ import org.fdnet.roq.sim.SensorSnapshot;
  * Draws the RoQ and its course from a {@link SensorSnapshot}: a top view of the whole course (terrain heights
  * shaded, fragile cells, broken ones open), a side view of the ground under the robot with the robot in profile,
  * and a panel of the sensed values (inclinometer, soles, ranges, the depth image). Robot pose comes from the
- * snapshot's ground truth — this is the observer's view, not the robot's. Reusable: {@link #paint} into any
+ * snapshot's ground truth — this is the observer's view, not the robot's. The top view also shows the support
+ * polygon of the feet in contact, the centre of mass and, when given, the path so far. Reusable: {@link #paint} into any
  * {@link Graphics2D} and bounds. Not thread-safe (one painter per component).
  */
 public final class RoqPainter {
@@ -35,6 +36,11 @@ public final class RoqPainter {
     private static final Color BROKEN = new Color(0x5A2A0A);
     private static final Color COM = new Color(0xC0392B);
     private static final Color GROUND = new Color(0x8B7D6B);
+    /** The support polygon: outline and translucent fill. */
+    static final Color SUPPORT = new Color(0x7D3C98);
+    private static final Color SUPPORT_FILL = new Color(0x7D, 0x3C, 0x98, 60);
+    /** The path the body has taken. */
+    static final Color PATH = new Color(0x1ABC9C);
     /** Length of ground the side view shows around the robot, m. */
     private static final double SIDE_SPAN = 2.0;
     private static final Font FONT = new Font(Font.MONOSPACED, Font.PLAIN, 12);
@@ -44,11 +50,24 @@ public final class RoqPainter {
     private final double[] leg = new double[12];
     private final double[] world = new double[12];
     private final double[] rotation = new double[9];
+    private final double[] support = new double[2 * RoqGeometry.LEGS];
+    private double[] path = new double[0];
+    private int pathPoints;
 
     /**
      * Paints the course and robot into {@code bounds}: top view above, side view and the sensor panel below.
      */
     public void paint(Graphics2D g, SensorSnapshot s, Heightfield terrain, Rectangle bounds) {
+        paint(g, s, terrain, bounds, new double[0], 0);
+    }
+
+    /**
+     * As {@link #paint(Graphics2D, SensorSnapshot, Heightfield, Rectangle)}, with the path so far in the top view:
+     * {@code points} body positions, x and y in turn in {@code path} (world metres).
+     */
+    public void paint(Graphics2D g, SensorSnapshot s, Heightfield terrain, Rectangle bounds, double[] path, int points) {
+        this.path = path;
+        this.pathPoints = points;
         Graphics2D g2 = (Graphics2D) g.create();
         try {
             g2.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
@@ -156,11 +175,73 @@ public final class RoqPainter {
         g.setColor(Color.WHITE);
         g.setStroke(new BasicStroke(2f));
         g.draw(new Line2D.Double(ox + cx * scale, oy - cy * scale, ox + nx * scale, oy - ny * scale));
+        drawPath(g, ox, oy, scale);
+        int feet = 0;
+        for (int l = 0; l < RoqGeometry.LEGS; l++) {
+            legInWorld(s, l);
+            if (s.footContact(l)) {
+                support[2 * feet] = world[9];
+                support[2 * feet + 1] = world[10];
+                feet++;
+            }
+        }
+        drawSupportPolygon(g, feet, ox, oy, scale);
         for (int l = 0; l < RoqGeometry.LEGS; l++) {
             legInWorld(s, l);
             drawLeg(g, s, l, ox, oy, scale, 0, 1);
         }
         mark(g, ox + s.groundTruthCentreOfMass(0) * scale, oy - s.groundTruthCentreOfMass(1) * scale);
+    }
+
+    private void drawPath(Graphics2D g, double ox, double oy, double scale) {
+        if (pathPoints < 2) {
+            return;
+        }
+        Path2D.Double p = new Path2D.Double();
+        p.moveTo(ox + path[0] * scale, oy - path[1] * scale);
+        for (int k = 1; k < pathPoints; k++) {
+            p.lineTo(ox + path[2 * k] * scale, oy - path[2 * k + 1] * scale);
+        }
+        g.setColor(PATH);
+        g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.draw(p);
+    }
+
+    /** The polygon of the feet in contact (2 feet: a line), corners in order of angle around their centre. */
+    private void drawSupportPolygon(Graphics2D g, int feet, double ox, double oy, double scale) {
+        if (feet < 2) {
+            return;
+        }
+        double mx = 0;
+        double my = 0;
+        for (int k = 0; k < feet; k++) {
+            mx += support[2 * k] / feet;
+            my += support[2 * k + 1] / feet;
+        }
+        Integer[] order = new Integer[feet];
+        for (int k = 0; k < feet; k++) {
+            order[k] = k;
+        }
+        double cx = mx;
+        double cy = my;
+        java.util.Arrays.sort(order, java.util.Comparator.comparingDouble(
+                k -> Math.atan2(support[2 * k + 1] - cy, support[2 * k] - cx)));
+        Path2D.Double p = new Path2D.Double();
+        for (int k = 0; k < feet; k++) {
+            double x = ox + support[2 * order[k]] * scale;
+            double y = oy - support[2 * order[k] + 1] * scale;
+            if (k == 0) {
+                p.moveTo(x, y);
+            } else {
+                p.lineTo(x, y);
+            }
+        }
+        p.closePath();
+        g.setColor(SUPPORT_FILL);
+        g.fill(p);
+        g.setColor(SUPPORT);
+        g.setStroke(new BasicStroke(1.5f));
+        g.draw(p);
     }
 
     private void drawLeg(Graphics2D g, SensorSnapshot s, int l, double ox, double oy, double scale, int h, int v) {

@@ -7,8 +7,6 @@ import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
 import java.awt.Window;
-import java.awt.event.WindowAdapter;
-import java.awt.event.WindowEvent;
 import java.util.List;
 
 import javax.swing.BorderFactory;
@@ -25,7 +23,6 @@ import javax.swing.JTabbedPane;
 import javax.swing.JTable;
 import javax.swing.JTextField;
 import javax.swing.ListSelectionModel;
-import javax.swing.WindowConstants;
 import javax.swing.table.DefaultTableModel;
 
 import org.fdnet.hi.edit.NetworkEditor;
@@ -125,18 +122,12 @@ public final class AdvancedModuleFrame extends JDialog {
         wireUserInput();
         speedy.updateAll();
 
-        setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
-        addWindowListener(new WindowAdapter() {
-            @Override
-            public void windowClosed(WindowEvent e) {
-                moduleModel.detach();
-                nodeModel.detach();
-                connectionModel.detach();
-            }
-        });
-        pack();
         setMinimumSize(new Dimension(640, 460));
-        setLocationRelativeTo(owner);
+        FrameClosing.finish(this, owner, () -> {
+            moduleModel.detach();
+            nodeModel.detach();
+            connectionModel.detach();
+        });
     }
 
     /** Opens (shows) the frame for {@code module}. */

@@ -5,8 +5,6 @@ import java.awt.Dimension;
 import java.awt.FlowLayout;
 import java.awt.GridLayout;
 import java.awt.Window;
-import java.awt.event.WindowAdapter;
-import java.awt.event.WindowEvent;
 import java.util.List;
 
 import javax.swing.BorderFactory;
@@ -20,7 +18,6 @@ import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JTextField;
 import javax.swing.ListSelectionModel;
-import javax.swing.WindowConstants;
 
 import org.fdnet.hi.edit.NetworkEditor;
 import org.fdnet.hi.edit.NetworkEditor.EditResult;
@@ -103,15 +100,7 @@ public final class BasicModuleFrame extends JDialog {
         wireUserInput();
         speedy.updateAll();
 
-        setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
-        addWindowListener(new WindowAdapter() {
-            @Override
-            public void windowClosed(WindowEvent e) {
-                model.detach();
-            }
-        });
-        pack();
-        setLocationRelativeTo(owner);
+        FrameClosing.finish(this, owner, model::detach);
     }
 
     public static BasicModuleFrame open(Window owner, NetworkEditor editor, String module) {

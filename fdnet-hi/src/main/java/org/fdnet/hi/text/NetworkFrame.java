@@ -6,8 +6,6 @@ import java.awt.FlowLayout;
 import java.awt.Window;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
-import java.awt.event.WindowAdapter;
-import java.awt.event.WindowEvent;
 import java.util.List;
 
 import javax.swing.BorderFactory;
@@ -20,7 +18,6 @@ import javax.swing.JScrollPane;
 import javax.swing.JTable;
 import javax.swing.JTextField;
 import javax.swing.ListSelectionModel;
-import javax.swing.WindowConstants;
 import javax.swing.table.DefaultTableModel;
 
 import org.fdnet.hi.edit.NetworkEditor;
@@ -99,15 +96,7 @@ public final class NetworkFrame extends JDialog {
         wireUserInput();
         speedy.updateAll();
 
-        setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
-        addWindowListener(new WindowAdapter() {
-            @Override
-            public void windowClosed(WindowEvent e) {
-                model.detach();
-            }
-        });
-        pack();
-        setLocationRelativeTo(owner);
+        FrameClosing.finish(this, owner, model::detach);
     }
 
     public static NetworkFrame open(Window owner, NetworkEditor editor) {

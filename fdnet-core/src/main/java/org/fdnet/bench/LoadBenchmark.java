@@ -14,7 +14,6 @@ import java.util.concurrent.Callable;
 import javax.xml.parsers.SAXParserFactory;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.ConnectionKind;
-import org.fdnet.netinfo.ModuleCounts;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
@@ -74,14 +73,7 @@ public final class LoadBenchmark implements Callable<Integer> {
         }
         Path file = Files.createTempFile("fdnet-bench-load", ".fdn");
         try {
-            out.printf("generating %,d nodes, %,d connections in %d modules (seed %d) ...%n", nodes, connections, modules, seed);
-            out.flush();
-            NetworkInfo generated = new NetworkGenerator(seed, false).generate(modules, nodes, connections);
-            NetworkRepository.save(generated, file);
-            ModuleCounts counts = generated.totalCounts();
-            out.printf("file: %,d bytes; %,d Datas, %,d Relations, %,d Readers, %,d Writers%n", Files.size(file),
-                    counts.datas(), counts.relations(), counts.readers(), counts.writers());
-            out.flush();
+            NetworkInfo generated = new NetworkGenerator(seed, false).writeTo(file, modules, nodes, connections, out);
             ColdFigures cold = measureCold(out, file, busiestData(generated));
             return measure(out, file, cold);
         } finally {

@@ -23,15 +23,34 @@ import org.fdnet.netinfo.ParameterType;
 public final class NetworkGenerator {
     private static final String[] EXOTIC_WORDS = {"姿勢", "バランス", "歩く", "a&b", "x<y", "say \"hi\"", "ümlaut", "plain"};
 
+    private final long seed;
     private final Random random;
     private final boolean exotic;
 
     public NetworkGenerator(long seed, boolean exotic) {
+        this.seed = seed;
         this.random = new Random(seed);
         this.exotic = exotic;
     }
 
     /** A network of about {@code nodes} nodes and exactly {@code connections} connections (fewer if the graph is too small). */
+    /**
+     * Generates a network and saves it to {@code file} (no {@code .fdg}), saying so on {@code out} with the file in
+     * numbers: the one way the benchmarks make their input.
+     */
+    public NetworkInfo writeTo(java.nio.file.Path file, int modules, int nodes, int connections, java.io.PrintWriter out)
+            throws java.io.IOException {
+        out.printf("generating %,d nodes, %,d connections in %d modules (seed %d) ...%n", nodes, connections, modules, seed);
+        out.flush();
+        NetworkInfo generated = generate(modules, nodes, connections);
+        org.fdnet.netinfo.xml.NetworkRepository.save(generated, file);
+        org.fdnet.netinfo.ModuleCounts c = generated.totalCounts();
+        out.printf("file: %,d bytes, no .fdg; %,d Datas, %,d Relations, %,d Readers, %,d Writers%n",
+                java.nio.file.Files.size(file), c.datas(), c.relations(), c.readers(), c.writers());
+        out.flush();
+        return generated;
+    }
+
     public NetworkInfo generate(int modules, int nodes, int connections) {
         NetworkInfo network = new NetworkInfo(exotic && random.nextBoolean() ? null : "generated-" + nodes);
         List<String> moduleNames = new ArrayList<>();

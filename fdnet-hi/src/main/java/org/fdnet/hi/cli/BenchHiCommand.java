@@ -17,7 +17,6 @@ import org.fdnet.hi.graph.GraphCanvas;
 import org.fdnet.hi.graph.GraphScene;
 import org.fdnet.hi.layout.ElkLayeredLayout;
 import org.fdnet.hi.layout.NodeSize;
-import org.fdnet.netinfo.ModuleCounts;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.xml.NetworkRepository;
@@ -67,14 +66,7 @@ public final class BenchHiCommand implements Callable<Integer> {
         Path dir = Files.createTempDirectory("fdnet-bench-hi");
         Path file = dir.resolve("generated.fdn");
         try {
-            out.printf("generating %,d nodes, %,d connections in %d modules (seed %d) ...%n", nodes, connections, modules, seed);
-            out.flush();
-            NetworkInfo generated = new NetworkGenerator(seed, false).generate(modules, nodes, connections);
-            NetworkRepository.save(generated, file);
-            ModuleCounts c = generated.totalCounts();
-            out.printf("file: %,d bytes, no .fdg; %,d Datas, %,d Relations, %,d Readers, %,d Writers%n", Files.size(file),
-                    c.datas(), c.relations(), c.readers(), c.writers());
-            out.flush();
+            new NetworkGenerator(seed, false).writeTo(file, modules, nodes, connections, out);
             return measure(out, file);
         } finally {
             Files.deleteIfExists(file);

@@ -13,6 +13,7 @@ import org.fdnet.corba.idl.Refused;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.NetworkControl;
+import org.fdnet.runtime.NetworkEdit;
 import org.omg.CORBA.SystemException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -38,6 +39,11 @@ public final class DistributedControl implements NetworkControl {
 
     public DistributedControl(NetworkDeployment deployment) {
         this.deployment = deployment;
+    }
+
+    @Override
+    public ChangeOutcome apply(String description, NetworkEdit edit) {
+        return ChangeOutcome.failed(description, "editing a running distributed network is not supported yet");
     }
 
     @Override

@@ -12,6 +12,9 @@ import org.fdnet.netinfo.NodeRef;
  * only when none refused.
  */
 public interface NetworkControl {
+    /** Applies an edit of the definition and makes the running network match it, on every host it touches. */
+    ChangeOutcome apply(String description, NetworkEdit edit);
+
     /** Loads a module that is not running. */
     ChangeOutcome load(String module);
 

@@ -27,6 +27,7 @@ import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.loading.NodeClassResolver;
 import org.fdnet.runtime.servant.Servants;
+import org.fdnet.runtime.servant.WholeNetwork;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -69,6 +70,7 @@ public final class RuntimeNetwork implements AutoCloseable {
     private Set<LiveLink> links = new LinkedHashSet<>();
     private volatile List<RemoteLink> remoteLinks = List.of();
     private volatile boolean closed;
+    private volatile WholeNetwork wholeNetwork;
 
     private RuntimeNetwork(NetworkInfo definition, RuntimeOptions options) {
         options.seal();
@@ -149,7 +151,15 @@ public final class RuntimeNetwork implements AutoCloseable {
     }
 
     private Servants servantsOf(RelationNode node) {
-        return new Servants(this, node.ref, node.id);
+        return new Servants(this, node.ref, node.id, wholeNetwork);
+    }
+
+    /**
+     * From now on, the Servants of this engine's Relations see and reshape {@code whole} (the network over every
+     * host this engine runs a share of) instead of this engine alone; {@code null} goes back to this engine.
+     */
+    public void seeWholeNetwork(WholeNetwork whole) {
+        this.wholeNetwork = whole;
     }
 
     public void addSink(EventSink sink) {

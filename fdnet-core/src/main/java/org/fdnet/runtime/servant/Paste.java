@@ -9,20 +9,21 @@ import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.ChangeOutcome;
-import org.fdnet.runtime.Controller;
 import org.fdnet.runtime.NetworkEdit;
 import org.fdnet.runtime.NetworkEdits;
 
 /**
  * The Paste servant: creates and destroys nodes, connects and disconnects them. Each call is one change
  * request of the controller, logged with the calling Relation as its source; a refused one changes
- * nothing and says why. Connections are declared by the module of their Relation end.
+ * nothing and says why. Connections are declared by the module of their Relation end. A node goes to the host its
+ * {@code host} names: on a network over several hosts, Paste creates and connects it there (when that host allows
+ * its class), prepared and committed on every host the change touches — refused anywhere, it changes nothing.
  */
 public final class Paste {
-    private final Controller controller;
+    private final ServantScope controller;
 
-    Paste(Controller controller) {
-        this.controller = controller;
+    Paste(ServantScope scope) {
+        this.controller = scope;
     }
 
     public ChangeOutcome create(String module, NodeInfo node) {

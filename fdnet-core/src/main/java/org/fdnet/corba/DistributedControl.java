@@ -198,12 +198,19 @@ public final class DistributedControl implements NetworkControl {
                         + " --name " + name + "); nothing changed on any host");
             }
         }
+        if (difference.isEmpty()) {
+            deployment.replacePlan(after);
+            version++;
+            return ChangeOutcome.executed(description + " (no running host is affected)");
+        }
         long id = NEXT_ID.incrementAndGet();
         Map<String, ShareChange> parts = new LinkedHashMap<>();
         difference.hosts().forEach((name, change) -> parts.put(name, toIdl(id, change)));
+        boolean[] committing = {false}; // set once every host prepared: from then on the hosts change
         ChangeOutcome outcome = twoPhase(description, List.copyOf(parts.keySet()), id,
                 (name, host) -> host.prepareShareChange(parts.get(name)),
                 () -> {
+                    committing[0] = true;
                     difference.closed().forEach(deployment::closeLink);
                     return List.of();
                 },
@@ -218,14 +225,12 @@ public final class DistributedControl implements NetworkControl {
                     }
                     return failed;
                 });
-        if (outcome.executed() || !outcome.reason().endsWith(NOTHING_CHANGED)) {
+        if (committing[0]) {
             deployment.replacePlan(after); // executed, or executed in part: the hosts now run (most of) the new plan
             version++;
         }
         return outcome;
     }
-
-    private static final String NOTHING_CHANGED = "nothing changed on any host";
 
     private static ShareChange toIdl(long id, PlanDifference.HostChange c) {
         return new ShareChange(id,
@@ -286,7 +291,7 @@ public final class DistributedControl implements NetworkControl {
                     LOG.warn("could not abort change {} on host {}: {}", id, e.getKey(), gone.toString());
                 }
             }
-            return ChangeOutcome.failed(description, refusal + "; " + NOTHING_CHANGED);
+            return ChangeOutcome.failed(description, refusal + "; nothing changed on any host");
         }
         List<String> failed = new ArrayList<>(beforeCommit.run());
         List<String> done = new ArrayList<>();

@@ -127,10 +127,9 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
 
     @Override
     public String check(String description, NetworkEdit edit) {
-        NetworkInfo candidate = runtime.readDefinition(NetworkInfo::copy);
         try {
-            edit.applyTo(candidate);
-            return null;
+            String problem = runtime.check(edit, true); // reshape loads the modules the edit adds
+            return problem == null ? null : description + ": " + problem;
         } catch (RuntimeException e) {
             return description + ": " + (e.getMessage() == null ? e.toString() : e.getMessage());
         }

@@ -19,8 +19,8 @@ import org.fdnet.runtime.NetworkEdit;
 /**
  * A host's side of structural changes of a running distributed network ({@code prepareShareChange}, then
  * {@code commitChange} or {@code abortChange} of {@code fdnet.idl}): {@link #prepare} checks the change — every
- * class to create allowed by this host's {@link ClassPolicy}, the edit valid on this host's definition — without
- * touching the engine, and keeps it; {@link #take} and {@link #execute} make it as one change of the engine; {@link #abort}
+ * class to create allowed by this host's {@link ClassPolicy}, then the edit as the engine checks a change (valid on
+ * this host's definition, every new node constructed and initialised) — without changing the engine, and keeps it; {@link #take} and {@link #execute} make it as one change of the engine; {@link #abort}
  * forgets it.
  */
 final class ShareChanges {

@@ -265,6 +265,45 @@ public final class RuntimeNetwork implements AutoCloseable {
         return settle(outcome);
     }
 
+    /**
+     * Whether {@code edit} could be applied now, checked as a change checks it — the edit on a copy of the
+     * definition, then every node it would start constructed and initialised — without changing anything: the new
+     * instances are dropped. The first phase of a change prepared on several hosts before any of them commits.
+     *
+     * @param loadAddedModules whether the modules the edit adds will be loaded with it (their nodes are checked too)
+     * @return {@code null}, or the reason the change would be refused
+     */
+    public String check(NetworkEdit edit, boolean loadAddedModules) {
+        structure.lock();
+        try {
+            if (closed) {
+                return "the network is stopped";
+            }
+            NetworkInfo candidate = definition.copy();
+            edit.applyTo(candidate);
+            Set<String> loadedNext = new LinkedHashSet<>(loaded);
+            loadedNext.add(ModuleInfo.MAIN);
+            if (loadAddedModules) {
+                candidate.modules().stream().filter(m -> definition.module(m.name()) == null)
+                        .forEach(m -> loadedNext.add(m.name()));
+            }
+            loadedNext.removeIf(m -> candidate.module(m) == null);
+            Prepared prepared = prepare(StructurePlan.of(candidate, loadedNext, options.placement()), Set.of());
+            for (Relation r : prepared.relations().values()) {
+                try {
+                    r.close();
+                } catch (RuntimeException e) {
+                    LOG.warn("a Relation made only to check a change did not close cleanly", e);
+                }
+            }
+            return null;
+        } catch (EditRefusedException | IllegalArgumentException e) {
+            return e.getMessage();
+        } finally {
+            structure.unlock();
+        }
+    }
+
     private ChangeOutcome settle(ChangeOutcome outcome) {
         if (!outcome.executed()) {
             LOG.info("change refused: {}", outcome);

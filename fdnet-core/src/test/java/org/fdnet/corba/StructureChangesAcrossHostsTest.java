@@ -123,6 +123,20 @@ class StructureChangesAcrossHostsTest {
         assertThat(Arrays.asList(crawler.nodes())).doesNotContain("main/Intruder");
         assertThat(control.snapshot().node(new NodeRef("main", "Loot"))).isNull();
 
+        // a class the crawler allows (a bare library name) but cannot make is refused at prepare, before any host changed
+        ChangeOutcome unmakeable = control.apply("add Phantom", n -> {
+            NodeRef phantom = n.addNode("main", new NodeInfo(NodeKind.RELATION, "Phantom", "crawler", "",
+                    "NoSuchRelation", List.of()));
+            n.addNode("main", new NodeInfo(NodeKind.DATA, "Echo", "flyer", "", "LongData", List.of()));
+            n.addConnection("main", ConnectionInfo.reader(SOURCE, phantom));
+            n.addConnection("main", ConnectionInfo.writer(phantom, new NodeRef("main", "Echo")));
+        });
+        assertThat(unmakeable.executed()).isFalse();
+        assertThat(unmakeable.reason()).contains("host crawler").contains("NoSuchRelation")
+                .endsWith("nothing changed on any host");
+        assertThat(Arrays.asList(flyer.nodes())).doesNotContain("main/Echo");
+        assertThat(Arrays.asList(crawler.nodes())).doesNotContain("main/Phantom");
+
         // an edit the definition itself refuses reaches no host
         ChangeOutcome invalid = control.apply("connect a ghost",
                 n -> n.addConnection("main", ConnectionInfo.reader(new NodeRef("main", "Ghost"), twice)));

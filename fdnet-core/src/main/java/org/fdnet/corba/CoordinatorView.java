@@ -75,6 +75,7 @@ final class CoordinatorView implements WholeNetwork {
         try {
             edit.applyTo(after);
         } catch (RuntimeException e) {
+            LOG.info("change {} refused here, before it reached the coordinator: {}", description, e.toString());
             return ChangeOutcome.failed(description, e.getMessage() == null ? e.toString() : e.getMessage());
         }
         try {
@@ -114,6 +115,8 @@ final class CoordinatorView implements WholeNetwork {
     }
 
     private static ChangeOutcome outcome(String description, Outcome o) {
-        return o.executed ? ChangeOutcome.executed(o.text) : ChangeOutcome.failed(description, o.text);
+        ChangeOutcome outcome = o.executed ? ChangeOutcome.executed(o.text) : ChangeOutcome.failed(description, o.text);
+        LOG.info("change asked of the whole network: {}", outcome);
+        return outcome;
     }
 }

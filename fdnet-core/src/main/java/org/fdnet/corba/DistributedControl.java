@@ -229,6 +229,7 @@ public final class DistributedControl implements NetworkControl {
             deployment.replacePlan(after); // executed, or executed in part: the hosts now run (most of) the new plan
             version++;
         }
+        LOG.info("structural change {} (network version {})", outcome, version);
         return outcome;
     }
 

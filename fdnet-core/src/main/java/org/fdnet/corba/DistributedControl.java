@@ -184,6 +184,10 @@ public final class DistributedControl implements NetworkControl {
 
     /** Derives every host's part of going to {@code next} with {@code loaded} running, and makes it everywhere. */
     private ChangeOutcome reshape(String description, NetworkInfo next, Set<String> loaded) {
+        return deployment.changingShares(() -> reshapeShares(description, next, loaded));
+    }
+
+    private ChangeOutcome reshapeShares(String description, NetworkInfo next, Set<String> loaded) {
         DeploymentPlan before = deployment.plan();
         DeploymentPlan after = before.next(next, loaded);
         PlanDifference difference = PlanDifference.between(before, after);
@@ -193,6 +197,10 @@ public final class DistributedControl implements NetworkControl {
             touched.add(l.toHost());
         }
         for (String name : touched) {
+            if (deployment.lostHosts().contains(name)) {
+                return ChangeOutcome.failed(description, "host " + name + " is lost (it is re-created when it comes"
+                        + " back); nothing changed on any host");
+            }
             if (deployment.join(name) == null) {
                 return ChangeOutcome.failed(description, "host " + name + " is not running (start it with: fdnet host"
                         + " --name " + name + "); nothing changed on any host");

@@ -60,6 +60,8 @@ public final class NetworkDeployment implements AutoCloseable {
 
     private String loggerAddress; // set once, before the first share is deployed
     private volatile NetworkCoordinator coordinator;
+    /** Held while a lost host's share is re-created and while a structural change replaces the plan. */
+    private final Object shares = new Object();
 
     private NetworkDeployment(DeploymentPlan plan, HostDirectory directory, DeploymentListener listener,
                               EventSink events, int window) {
@@ -285,7 +287,23 @@ public final class NetworkDeployment implements AutoCloseable {
         }
     }
 
+    /**
+     * Runs a structural change of the deployment ({@link DistributedControl}) while no lost host is being re-created:
+     * a host that comes back is re-created either from the plan before the change or from the plan after it.
+     */
+    <T> T changingShares(java.util.function.Supplier<T> change) {
+        synchronized (shares) {
+            return change.get();
+        }
+    }
+
     private void tryRecover(String name) {
+        synchronized (shares) {
+            recover(name);
+        }
+    }
+
+    private void recover(String name) {
         Optional<Host> found;
         try {
             found = directory.find(name);

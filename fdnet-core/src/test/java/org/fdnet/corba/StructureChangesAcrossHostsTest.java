@@ -25,7 +25,8 @@ import org.junit.jupiter.api.Timeout;
 /**
  * Structural changes of a running network over three processes (the test JVM coordinates as host "base"; child
  * JVMs run "flyer" and "crawler"), through {@link DistributedControl}: a module spanning two hosts is unloaded and
- * loaded again, and edits are applied on every host they touch or refused changing nothing.
+ * loaded again, and edits are applied on every host they touch (and stay applied when a host restarts) or refused
+ * changing nothing.
  *
  * <pre>
  *   flyer: main/Source ══▶ crawler: Relay/Copy (in0) ══▶ base: Relay/Out          (module Relay: crawler + base)
@@ -108,6 +109,14 @@ class StructureChangesAcrossHostsTest {
         await(() -> Long.valueOf(10).equals(base.read(doubled)), () -> "Doubled on base: " + base.read(doubled));
         assertThat(control.snapshot().node(twice).host()).isEqualTo("crawler");
 
+        // the edit is part of the deployment now: a crawler killed and restarted gets Twice back with its links
+        cluster.kill("crawler");
+        crawler = cluster.restart("crawler");
+        await(() -> deployment.lostHosts().isEmpty() && Arrays.asList(crawler.nodes()).contains(twice.toString()),
+                () -> "lost " + deployment.lostHosts() + ", crawler runs " + nodes(crawler));
+        send(6);
+        await(() -> Long.valueOf(12).equals(base.read(doubled)), () -> "Doubled on base: " + base.read(doubled));
+
         // crawler refuses a class outside its allowed paths: the flyer's new Data is not made either
         ChangeOutcome refused = control.apply("add Intruder", n -> {
             NodeRef intruder = n.addNode("main", new NodeInfo(NodeKind.RELATION, "Intruder", "crawler",
@@ -149,7 +158,15 @@ class StructureChangesAcrossHostsTest {
         assertThat(Arrays.asList(crawler.nodes())).doesNotContain(twice.toString());
         send(7);
         await(() -> Long.valueOf(7).equals(base.read(OUT)), () -> "Relay/Out on base: " + base.read(OUT));
-        assertThat(base.read(doubled)).isEqualTo(10L);
+        assertThat(base.read(doubled)).as("Twice is gone: Doubled keeps its last value").isEqualTo(12L);
+    }
+
+    private static String nodes(Host host) {
+        try {
+            return Arrays.toString(host.nodes());
+        } catch (RuntimeException e) {
+            return e.toString();
+        }
     }
 
     private void send(long value) throws Exception {

@@ -11,6 +11,8 @@ import org.fdnet.corba.idl.Outcome;
 import org.fdnet.corba.idl.Refused;
 import org.fdnet.corba.idl.UnknownNode;
 import org.fdnet.corba.idl.Value;
+import java.util.function.Supplier;
+import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.runtime.ChangeOutcome;
 import org.omg.CORBA.SystemException;
 
@@ -54,24 +56,30 @@ public final class CoordinatorServant extends NetworkCoordinatorPOA {
 
     @Override
     public Outcome applyEdit(String description, long basedOn, NetworkDescription after) {
-        ChangeOutcome outcome;
+        NetworkInfo definition;
         try {
-            outcome = control.applyDefinition(description, basedOn, NetworkDescriptions.decode(after).definition());
+            definition = NetworkDescriptions.decode(after).definition();
         } catch (RuntimeException e) {
-            outcome = ChangeOutcome.failed(description, "the edited network is not valid: " + e.getMessage()
-                    + "; nothing changed on any host");
+            return outcome(ChangeOutcome.failed(description, "the edited network is not valid: " + e.getMessage()
+                    + "; nothing changed on any host"));
         }
-        return outcome(outcome);
+        return whenFree(description, () -> control.applyDefinition(description, basedOn, definition));
     }
 
     @Override
     public Outcome changeModule(ModuleOp op, String moduleName) {
-        return outcome(switch (op.value()) {
-            case ModuleOp._MO_LOAD -> control.load(moduleName);
-            case ModuleOp._MO_UNLOAD -> control.unload(moduleName);
-            case ModuleOp._MO_HOLD -> control.hold(moduleName);
-            default -> control.resume(moduleName);
-        });
+        return switch (op.value()) {
+            case ModuleOp._MO_LOAD -> whenFree("load " + moduleName, () -> control.load(moduleName));
+            case ModuleOp._MO_UNLOAD -> whenFree("unload " + moduleName, () -> control.unload(moduleName));
+            case ModuleOp._MO_HOLD -> whenFree("hold " + moduleName, () -> control.hold(moduleName));
+            default -> whenFree("resume " + moduleName, () -> control.resume(moduleName));
+        };
+    }
+
+    /** A change a host's Relation asks: refused at once while another change runs (it may be what started it). */
+    private Outcome whenFree(String description, Supplier<ChangeOutcome> change) {
+        return outcome(control.deployment().ifNoChangeRuns(change).orElseGet(() -> ChangeOutcome.failed(description,
+                "another change of this network is being made right now; nothing changed on any host (try again)")));
     }
 
     private static Outcome outcome(ChangeOutcome o) {

@@ -51,26 +51,35 @@ public final class DistributedControl implements NetworkControl {
     private static final AtomicLong NEXT_ID = new AtomicLong(System.currentTimeMillis() * 1000);
 
     private final NetworkDeployment deployment;
-    private long version = 1; // guarded by this; changes with every executed structural change
+    /** Changes with every executed structural change; written under the deployment's change lock, after the plan. */
+    private volatile long version = 1;
 
     public DistributedControl(NetworkDeployment deployment) {
         this.deployment = deployment;
     }
 
     /** The running definition, including what Relations built through Paste (a copy: editing it changes nothing). */
-    public synchronized NetworkInfo snapshot() {
+    public NetworkInfo snapshot() {
         return deployment.plan().definition();
     }
 
     /** The whole network now: definition, loaded modules and where each running node runs. */
-    public synchronized WholeNetwork.Snapshot wholeSnapshot() {
-        DeploymentPlan plan = deployment.plan();
+    public WholeNetwork.Snapshot wholeSnapshot() {
+        return snapshotOf(deployment.plan());
+    }
+
+    private static WholeNetwork.Snapshot snapshotOf(DeploymentPlan plan) {
         return new WholeNetwork.Snapshot(plan.definition(), plan.loaded(), plan.placement());
     }
 
-    /** The whole network as the IDL describes it, with the version a later {@link #applyDefinition} names. */
-    synchronized NetworkDescription description() {
-        return NetworkDescriptions.encode(version, wholeSnapshot());
+    /**
+     * The whole network as the IDL describes it, with the version a later {@link #applyDefinition} names. Takes no
+     * lock (a Relation asks it in the middle of changes): the version is read before the plan, so a description can
+     * only pair a newer plan with an older version, and an edit made on it is refused, never misapplied.
+     */
+    NetworkDescription description() {
+        long v = version;
+        return NetworkDescriptions.encode(v, snapshotOf(deployment.plan()));
     }
 
     /** The host a running node runs on, or {@code null}. */
@@ -83,7 +92,11 @@ public final class DistributedControl implements NetworkControl {
     }
 
     @Override
-    public synchronized ChangeOutcome apply(String description, NetworkEdit edit) {
+    public ChangeOutcome apply(String description, NetworkEdit edit) {
+        return deployment.changingShares(() -> applyNow(description, edit));
+    }
+
+    private ChangeOutcome applyNow(String description, NetworkEdit edit) {
         DeploymentPlan plan = deployment.plan();
         NetworkInfo next = plan.definition();
         try {
@@ -99,16 +112,22 @@ public final class DistributedControl implements NetworkControl {
      * Makes the running network match {@code after}, which the caller derived from the description of
      * {@code basedOn}; refused when the network changed since (the caller reads it again and retries).
      */
-    synchronized ChangeOutcome applyDefinition(String description, long basedOn, NetworkInfo after) {
-        if (basedOn != version) {
-            return ChangeOutcome.failed(description, "the network changed since it was read (version " + basedOn
-                    + ", now " + version + "); nothing changed on any host");
-        }
-        return reshape(description, after, deployment.plan().loaded());
+    ChangeOutcome applyDefinition(String description, long basedOn, NetworkInfo after) {
+        return deployment.changingShares(() -> {
+            if (basedOn != version) {
+                return ChangeOutcome.failed(description, "the network changed since it was read (version " + basedOn
+                        + ", now " + version + "); nothing changed on any host (try again)");
+            }
+            return reshape(description, after, deployment.plan().loaded());
+        });
     }
 
     @Override
-    public synchronized ChangeOutcome load(String module) {
+    public ChangeOutcome load(String module) {
+        return deployment.changingShares(() -> loadNow(module));
+    }
+
+    private ChangeOutcome loadNow(String module) {
         String description = "load " + module;
         DeploymentPlan plan = deployment.plan();
         NetworkInfo def = plan.definition();
@@ -124,7 +143,11 @@ public final class DistributedControl implements NetworkControl {
     }
 
     @Override
-    public synchronized ChangeOutcome unload(String module) {
+    public ChangeOutcome unload(String module) {
+        return deployment.changingShares(() -> unloadNow(module));
+    }
+
+    private ChangeOutcome unloadNow(String module) {
         String description = "unload " + module;
         DeploymentPlan plan = deployment.plan();
         if (module.equals(ModuleInfo.MAIN)) {
@@ -274,8 +297,13 @@ public final class DistributedControl implements NetworkControl {
      * Prepare on every host; only when none refused: {@code beforeCommit}, commit on every host, {@code afterCommit};
      * else abort the prepared ones and change nothing.
      */
-    private synchronized ChangeOutcome twoPhase(String description, List<String> hosts, long id, Prepare prepare,
-                                                Step beforeCommit, Step afterCommit) {
+    private ChangeOutcome twoPhase(String description, List<String> hosts, long id, Prepare prepare,
+                                   Step beforeCommit, Step afterCommit) {
+        return deployment.changingShares(() -> twoPhaseNow(description, hosts, id, prepare, beforeCommit, afterCommit));
+    }
+
+    private ChangeOutcome twoPhaseNow(String description, List<String> hosts, long id, Prepare prepare,
+                                      Step beforeCommit, Step afterCommit) {
         Map<String, Host> prepared = new LinkedHashMap<>();
         String refusal = null;
         for (String name : hosts) {

@@ -10,6 +10,8 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Supplier;
 import java.util.stream.Collectors;
 import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.Host;
@@ -60,8 +62,8 @@ public final class NetworkDeployment implements AutoCloseable {
 
     private String loggerAddress; // set once, before the first share is deployed
     private volatile NetworkCoordinator coordinator;
-    /** Held while a lost host's share is re-created and while a structural change replaces the plan. */
-    private final Object shares = new Object();
+    /** Held by every change of the running network and while a lost host's share is re-created. */
+    private final ReentrantLock changes = new ReentrantLock();
 
     private NetworkDeployment(DeploymentPlan plan, HostDirectory directory, DeploymentListener listener,
                               EventSink events, int window) {
@@ -288,19 +290,39 @@ public final class NetworkDeployment implements AutoCloseable {
     }
 
     /**
-     * Runs a structural change of the deployment ({@link DistributedControl}) while no lost host is being re-created:
-     * a host that comes back is re-created either from the plan before the change or from the plan after it.
+     * Runs a change of the running network ({@link DistributedControl}) while no other runs and no lost host is being
+     * re-created: a host that comes back is re-created either from the plan before a change or from the plan after it.
      */
-    <T> T changingShares(java.util.function.Supplier<T> change) {
-        synchronized (shares) {
+    <T> T changingShares(Supplier<T> change) {
+        changes.lock();
+        try {
             return change.get();
+        } finally {
+            changes.unlock();
+        }
+    }
+
+    /**
+     * {@link #changingShares} for a change asked by a host's Relation: empty, at once, when another change runs. A
+     * Relation a change starts fires on the thread of that change's commit on its host, while the coordinator waits
+     * for the commit; were it to wait for the coordinator in turn, neither would ever finish.
+     */
+    <T> Optional<T> ifNoChangeRuns(Supplier<T> change) {
+        if (!changes.tryLock()) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(change.get());
+        } finally {
+            changes.unlock();
         }
     }
 
     private void tryRecover(String name) {
-        synchronized (shares) {
+        changingShares(() -> {
             recover(name);
-        }
+            return null;
+        });
     }
 
     private void recover(String name) {

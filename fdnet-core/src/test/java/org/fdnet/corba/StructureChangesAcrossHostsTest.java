@@ -55,6 +55,7 @@ class StructureChangesAcrossHostsTest {
         deployment = NetworkDeployment.start(DeploymentPlan.of(network(), "base", Set.of()), cluster.directory(),
                 Map.of("base", local.reference()), DeploymentListener.quiet(), new MemoryEventSink(), 4, 10_000, 100);
         control = new DistributedControl(deployment);
+        CoordinatorServant.publish(local.orb(), control); // as fdnet run does: the hosts' Servants see the whole network
     }
 
     @AfterEach
@@ -159,6 +160,22 @@ class StructureChangesAcrossHostsTest {
         send(7);
         await(() -> Long.valueOf(7).equals(base.read(OUT)), () -> "Relay/Out on base: " + base.read(OUT));
         assertThat(base.read(doubled)).as("Twice is gone: Doubled keeps its last value").isEqualTo(12L);
+    }
+
+    @Test
+    void shouldLetARelationThatAnEditStartsReshapeTheNetworkWithoutDeadlock() throws Exception {
+        // The new Organizer fires as soon as the crawler commits (on the thread of that commit, while the coordinator
+        // waits for it): its Visitor and Paste ask the coordinator in the middle of the coordinator's own change.
+        ChangeOutcome added = control.apply("add an Organizer and a Gyro", n -> {
+            n.addNode("main", new NodeInfo(NodeKind.RELATION, "Organizer", "crawler", "", "AutoFilter",
+                    List.of(Parameter.named("period", "100"), Parameter.named("alpha", "0.5"))));
+            n.addNode("main", new NodeInfo(NodeKind.DATA, "Gyro", "flyer", "", "DoubleSensor", List.of()));
+        });
+        // had the Organizer's calls waited for the coordinator, the crawler's commit would have timed out (5 s calls)
+        assertThat(added.executed()).as(added.toString()).isTrue();
+        await(() -> Arrays.asList(flyer.nodes()).contains("main/Gyro filter"), () -> "flyer runs " + nodes(flyer)
+                + "\nCRAWLER:\n" + String.join("\n", cluster.output("crawler")));
+        assertThat(control.snapshot().node(new NodeRef("main", "Gyro filter")).host()).isEqualTo("flyer");
     }
 
     private static String nodes(Host host) {

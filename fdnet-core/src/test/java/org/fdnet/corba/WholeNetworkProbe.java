@@ -21,7 +21,7 @@ import org.fdnet.runtime.servant.Servants;
  * {@code Seen} the running Datas with their hosts (Visitor), the nodes downstream of {@code from} (Iterator) and the
  * connections crossed (LinkageIterator). Once, it asks Paste for a Relation of a class from {@code /nonexistent}
  * on host {@code pasteHost}, with a new Data on its own host, and writes the outcome into {@code PasteAnswer} (it
- * asks again when the network changed under it).
+ * asks again when the coordinator says to try again: the network changed under it, or another change was running).
  */
 public class WholeNetworkProbe extends Relation {
     private NodeRef from;
@@ -58,7 +58,7 @@ public class WholeNetworkProbe extends Relation {
             ChangeOutcome o = s.paste().pasteRelation("main", intruder, List.of(out), List.of(from),
                     List.of(new NodeRef("main", "IntruderOut")));
             String text = o.executed() ? "executed: " + o.description() : "refused: " + o.reason();
-            answered = !text.contains("changed since it was read");
+            answered = !text.endsWith("(try again)"); // the network changed meanwhile, or another change ran
             c.output("PasteAnswer", Value.of(text));
         }
     }

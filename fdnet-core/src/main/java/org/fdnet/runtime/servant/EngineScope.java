@@ -2,8 +2,10 @@ package org.fdnet.runtime.servant;
 
 import java.util.List;
 import java.util.Map;
+import java.util.function.Function;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.LinkedConnection;
+import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
@@ -31,15 +33,30 @@ final class EngineScope implements ServantScope {
     }
 
     @Override
+    public <T> T read(Function<NetworkInfo, T> query) {
+        return network.readDefinition(query);
+    }
+
+    @Override
+    public NodeDescription describe(NodeRef ref) {
+        record Defined(NodeInfo info, List<LinkedConnection> connections) {
+        }
+        Defined defined = network.readDefinition(d -> d.node(ref) == null ? null
+                : new Defined(d.node(ref), List.copyOf(d.connectionsOf(ref))));
+        return defined == null ? null : describe(ref, defined.info(), defined.connections());
+    }
+
+    @Override
     public NodeDescription describe(WholeNetwork.Snapshot snapshot, NodeRef ref) {
         NodeInfo info = snapshot.definition().node(ref);
-        if (info == null) {
-            return null;
-        }
+        return info == null ? null : describe(ref, info, List.copyOf(snapshot.definition().connectionsOf(ref)));
+    }
+
+    private NodeDescription describe(NodeRef ref, NodeInfo info, List<LinkedConnection> connections) {
         Value value = info.kind() == NodeKind.DATA ? controller.value(ref) : null;
         RelationState state = info.kind() == NodeKind.RELATION ? controller.relationState(ref) : null;
         return new NodeDescription(ref, info, controller.nodeId(ref), value != null || state != null, value, state,
-                List.copyOf(snapshot.definition().connectionsOf(ref)));
+                connections);
     }
 
     @Override

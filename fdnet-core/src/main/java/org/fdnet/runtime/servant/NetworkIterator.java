@@ -18,11 +18,11 @@ public final class NetworkIterator implements Iterable<NodeRef> {
     }
 
     static NetworkIterator downstream(ServantScope scope, NodeRef start) {
-        return new NetworkIterator(new ArrayList<>(scope.snapshot().definition().descendants(start)));
+        return new NetworkIterator(scope.read(d -> new ArrayList<>(d.descendants(start))));
     }
 
     static NetworkIterator upstream(ServantScope scope, NodeRef start) {
-        return new NetworkIterator(new ArrayList<>(scope.snapshot().definition().ancestors(start)));
+        return new NetworkIterator(scope.read(d -> new ArrayList<>(d.ancestors(start))));
     }
 
     @Override

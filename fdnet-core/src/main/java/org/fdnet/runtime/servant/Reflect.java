@@ -12,6 +12,6 @@ public final class Reflect {
 
     /** The node's description, or {@code null} when the network defines no such node. */
     public NodeDescription describe(NodeRef ref) {
-        return scope.describe(scope.snapshot(), ref);
+        return scope.describe(ref);
     }
 }

@@ -1,6 +1,8 @@
 package org.fdnet.runtime.servant;
 
+import java.util.function.Function;
 import org.fdnet.netinfo.LinkedConnection;
+import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.NetworkEdit;
@@ -12,6 +14,12 @@ import org.fdnet.runtime.NetworkEdit;
  */
 interface ServantScope {
     WholeNetwork.Snapshot snapshot();
+
+    /** Answers {@code query} from the definition now, without a copy where it can (one engine reads under its lock). */
+    <T> T read(Function<NetworkInfo, T> query);
+
+    /** One node's description now, or {@code null} when the network defines no such node. */
+    NodeDescription describe(NodeRef ref);
 
     /** The node's description in {@code snapshot}, or {@code null} when it defines no such node. */
     NodeDescription describe(WholeNetwork.Snapshot snapshot, NodeRef ref);

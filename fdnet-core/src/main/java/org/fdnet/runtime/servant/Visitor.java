@@ -57,7 +57,7 @@ public final class Visitor {
 
     /** Every node the definition holds, loaded or not, in order. */
     public List<NodeRef> defined() {
-        return refs(scope.snapshot().definition());
+        return scope.read(Visitor::refs);
     }
 
     private static List<NodeRef> refs(NetworkInfo definition) {

@@ -1,8 +1,10 @@
 package org.fdnet.runtime.servant;
 
 import java.util.List;
+import java.util.function.Function;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.LinkedConnection;
+import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
@@ -29,6 +31,16 @@ final class WholeNetworkScope implements ServantScope {
     @Override
     public WholeNetwork.Snapshot snapshot() {
         return whole.snapshot();
+    }
+
+    @Override
+    public <T> T read(Function<NetworkInfo, T> query) {
+        return query.apply(whole.snapshot().definition());
+    }
+
+    @Override
+    public NodeDescription describe(NodeRef ref) {
+        return describe(whole.snapshot(), ref);
     }
 
     @Override

@@ -82,6 +82,18 @@ public final class DeploymentPlan {
 
     private final Map<String, HostShare> shares = new LinkedHashMap<>();
     private final List<Link> links = new ArrayList<>();
+    private final NetworkInfo definition;
+    private final Set<String> loaded;
+    private final String localHost;
+    private final Set<String> localNames;
+    private long lastLinkId;
+
+    private DeploymentPlan(NetworkInfo definition, Set<String> loaded, String localHost, Set<String> localNames) {
+        this.definition = definition;
+        this.loaded = loaded;
+        this.localHost = localHost;
+        this.localNames = localNames;
+    }
 
     /** Plans the modules of {@code network} that are loaded at start. */
     public static DeploymentPlan of(NetworkInfo network, String localHost, Set<String> localNames) {
@@ -102,19 +114,51 @@ public final class DeploymentPlan {
                 throw new IllegalArgumentException("the network has no module named '" + m + "'");
             }
         }
-        DeploymentPlan plan = new DeploymentPlan();
-        Map<NodeRef, String> hostOf = new LinkedHashMap<>();
+        Set<String> loaded = new LinkedHashSet<>();
+        for (ModuleInfo m : network.modules()) {
+            if (m.isMain() || m.loadAtStart() || alsoLoaded.contains(m.name())) {
+                loaded.add(m.name());
+            }
+        }
         Set<String> local = new LinkedHashSet<>();
         localNames.forEach(n -> local.add(n.toLowerCase(Locale.ROOT)));
+        return plan(network.copy(), loaded, localHost, Set.copyOf(local), null);
+    }
+
+    /**
+     * The plan of the same deployment after a structural change: {@code next} (the whole definition) with exactly
+     * the modules {@code loaded} running ({@code main} always). A link that stays keeps its id; a new one gets an
+     * id this deployment never used, so a host never confuses it with one that was closed.
+     */
+    public DeploymentPlan next(NetworkInfo next, Set<String> loaded) {
+        Set<String> running = new LinkedHashSet<>();
+        running.add(ModuleInfo.MAIN);
+        for (String m : loaded) {
+            if (next.module(m) != null) {
+                running.add(m);
+            }
+        }
+        return plan(next.copy(), running, localHost, localNames, this);
+    }
+
+    private static DeploymentPlan plan(NetworkInfo network, Set<String> loaded, String localHost,
+                                       Set<String> localLowerCase, DeploymentPlan previous) {
+        DeploymentPlan plan = new DeploymentPlan(network, Set.copyOf(loaded), localHost, localLowerCase);
+        Map<NodeRef, String> hostOf = new LinkedHashMap<>();
         for (ModuleInfo m : network.modules()) {
-            if (!m.isMain() && !m.loadAtStart() && !alsoLoaded.contains(m.name())) {
+            if (!loaded.contains(m.name())) {
                 continue;
             }
             for (NodeInfo n : m.nodes()) {
-                String host = placeOf(n.host(), localHost, local);
+                String host = placeOf(n.host(), localHost, localLowerCase);
                 hostOf.put(new NodeRef(m.name(), n.name()), host);
                 plan.share(host).nodes.add(new Placed(m.name(), n));
             }
+        }
+        Map<String, Long> previousIds = new LinkedHashMap<>();
+        if (previous != null) {
+            previous.links.forEach(l -> previousIds.put(l.fromHost() + "|" + l.toHost() + "|" + l.data(), l.id()));
+            plan.lastLinkId = previous.lastLinkId;
         }
         Map<String, Link> linkByKey = new LinkedHashMap<>();
         for (ModuleInfo m : network.modules()) {
@@ -132,12 +176,33 @@ public final class DeploymentPlan {
                         new StandIn(c.data(), network.node(c.data()), dataHost));
                 String from = c.kind() == ConnectionKind.READER ? dataHost : relationHost;
                 String to = c.kind() == ConnectionKind.READER ? relationHost : dataHost;
-                linkByKey.computeIfAbsent(from + "|" + to + "|" + c.data(),
-                        k -> new Link(linkByKey.size() + 1L, c.data(), from, to, from.equals(dataHost)));
+                String key = from + "|" + to + "|" + c.data();
+                if (!linkByKey.containsKey(key)) {
+                    Long kept = previousIds.get(key);
+                    long id = kept != null ? kept : ++plan.lastLinkId;
+                    linkByKey.put(key, new Link(id, c.data(), from, to, from.equals(dataHost)));
+                }
             }
         }
         plan.links.addAll(linkByKey.values());
         return plan;
+    }
+
+    /** The whole definition this plan places (a copy: editing it changes nothing). */
+    public NetworkInfo definition() {
+        return definition.copy();
+    }
+
+    /** The modules running under this plan. */
+    public Set<String> loaded() {
+        return loaded;
+    }
+
+    /** The host each running node runs on. */
+    public Map<NodeRef, String> placement() {
+        Map<NodeRef, String> placed = new LinkedHashMap<>();
+        shares.forEach((host, share) -> share.nodes.forEach(p -> placed.put(p.ref(), host)));
+        return placed;
     }
 
     /** The host a node's {@code host} element means. */

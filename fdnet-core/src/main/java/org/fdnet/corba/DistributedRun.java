@@ -101,7 +101,9 @@ public final class DistributedRun {
             if (!applySets(request.sets(), plan, deployment, err)) {
                 return 2;
             }
-            new ControlCommands(new DistributedControl(deployment), out).readFrom(System.in);
+            DistributedControl control = new DistributedControl(deployment);
+            CoordinatorServant.publish(local.orb(), control); // every host's Servants now see the whole network
+            new ControlCommands(control, out).readFrom(System.in);
             long end = request.duration() == null ? Long.MAX_VALUE : started + request.duration().toNanos();
             while (System.nanoTime() < end) {
                 long wait = Math.min(TimeUnit.SECONDS.toNanos(1), end - System.nanoTime());

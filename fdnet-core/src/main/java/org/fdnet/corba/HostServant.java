@@ -10,10 +10,12 @@ import org.fdnet.corba.idl.ChangeKind;
 import org.fdnet.corba.idl.ChangeRequest;
 import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.HostPOA;
+import org.fdnet.corba.idl.NetworkCoordinator;
 import org.fdnet.corba.idl.NetworkListener;
 import org.fdnet.corba.idl.NodeId;
 import org.fdnet.corba.idl.NodeSpec;
 import org.fdnet.corba.idl.Refused;
+import org.fdnet.corba.idl.ShareChange;
 import org.fdnet.corba.idl.UnknownLink;
 import org.fdnet.corba.idl.UnknownNode;
 import org.fdnet.corba.idl.Value;
@@ -45,6 +47,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     private final ORB orb;
     private final ChangeNotifier notifier;
     private final LiveChanges liveChanges;
+    private final ShareChanges shareChanges;
     private final Map<Long, InboundLink> inbound = new ConcurrentHashMap<>();
     private final Map<Long, Forwarding> outbound = new ConcurrentHashMap<>();
     private final AtomicLong retiredReceived = new AtomicLong();
@@ -62,6 +65,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         this.orb = orb;
         this.notifier = new ChangeNotifier(hostName);
         this.liveChanges = new LiveChanges(hostName, network);
+        this.shareChanges = new ShareChanges(hostName, network, policy);
     }
 
     @Override
@@ -127,7 +131,31 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     }
 
     @Override
+    public String prepareShareChange(ShareChange change) {
+        String refusal = shareChanges.prepare(change);
+        if (!refusal.isEmpty()) {
+            LOG.info("host {} refused change {}: {}", hostName, change.id, refusal);
+        }
+        return refusal;
+    }
+
+    @Override
     public void commitChange(long id) throws Refused {
+        ShareChange structural = shareChanges.take(id);
+        if (structural != null) {
+            String failure = shareChanges.execute(structural, this::closeLinksOf);
+            if (failure != null) {
+                LOG.warn("host {}: structural change {} failed: {}", hostName, id, failure);
+                throw new Refused(failure);
+            }
+            for (NodeId gone : structural.destroy) {
+                notifier.publish(ChangeKind.NODE_DESTROYED, IdlMapping.ref(gone).toString());
+            }
+            for (NodeSpec made : structural.create) {
+                notifier.publish(ChangeKind.NODE_CREATED, IdlMapping.ref(made.id).toString());
+            }
+            return;
+        }
         String failure = liveChanges.commit(id);
         if (failure != null) {
             throw new Refused(failure);
@@ -137,6 +165,13 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     @Override
     public void abortChange(long id) {
         liveChanges.abort(id);
+        shareChanges.abort(id);
+    }
+
+    @Override
+    public void joinNetwork(NetworkCoordinator coordinator) {
+        network.seeWholeNetwork(new CoordinatorView(coordinator));
+        LOG.info("host {}: its Relations' Servants now see the whole network", hostName);
     }
 
     @Override

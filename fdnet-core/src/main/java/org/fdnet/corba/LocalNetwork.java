@@ -7,6 +7,8 @@ import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.Controller;
+import org.fdnet.runtime.NetworkEdit;
+import org.fdnet.runtime.servant.WholeNetwork;
 
 /**
  * What a host needs from the engine that runs its share of a network: the seam between CORBA
@@ -83,6 +85,27 @@ public interface LocalNetwork {
     default boolean useLogger(String hostPort) {
         throw new UnsupportedOperationException("this host's engine (" + getClass().getSimpleName()
                 + ") records no events");
+    }
+
+    /**
+     * Why {@code edit} of this host's definition cannot be made now (names taken, ends missing), or {@code null};
+     * changes nothing.
+     */
+    default String check(String description, NetworkEdit edit) {
+        return "this host's engine (" + getClass().getSimpleName() + ") takes no structural changes";
+    }
+
+    /**
+     * Makes {@code edit} of this host's definition as one change of the engine; the modules it names are loaded.
+     *
+     * @throws IllegalStateException with the engine's reason when it refuses; nothing changed then
+     */
+    default void reshape(String description, NetworkEdit edit) {
+        throw new IllegalStateException(check(description, edit));
+    }
+
+    /** From now on this host's Relations' Servants see and reshape {@code whole}; ignored by engines without them. */
+    default void seeWholeNetwork(WholeNetwork whole) {
     }
 
     /**

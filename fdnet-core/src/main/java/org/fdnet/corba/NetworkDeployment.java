@@ -10,9 +10,12 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Supplier;
 import java.util.stream.Collectors;
 import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.Host;
+import org.fdnet.corba.idl.NetworkCoordinator;
 import org.fdnet.corba.idl.NodeSpec;
 import org.fdnet.corba.idl.Refused;
 import org.fdnet.corba.idl.UnknownNode;
@@ -44,7 +47,7 @@ import org.slf4j.LoggerFactory;
 public final class NetworkDeployment implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(NetworkDeployment.class);
 
-    private final DeploymentPlan plan;
+    private volatile DeploymentPlan plan; // replaced by structural changes (DistributedControl)
     private final HostDirectory directory;
     private final DeploymentListener listener;
     private final EventSink events;
@@ -58,6 +61,9 @@ public final class NetworkDeployment implements AutoCloseable {
     private final ScheduledExecutorService watcher;
 
     private String loggerAddress; // set once, before the first share is deployed
+    private volatile NetworkCoordinator coordinator;
+    /** Held by every change of the running network and while a lost host's share is re-created. */
+    private final ReentrantLock changes = new ReentrantLock();
 
     private NetworkDeployment(DeploymentPlan plan, HostDirectory directory, DeploymentListener listener,
                               EventSink events, int window) {
@@ -137,9 +143,7 @@ public final class NetworkDeployment implements AutoCloseable {
     private void deployShare(String hostName, Host host) throws DeploymentException {
         DeploymentPlan.HostShare share = plan.shareOf(hostName);
         try {
-            if (loggerAddress != null && host.useLogger(loggerAddress)) {
-                LOG.info("host {} records its events with the logger at {}", hostName, loggerAddress);
-            }
+            welcome(hostName, host);
             for (DeploymentPlan.StandIn s : share.standIns()) {
                 host.createStandIn(IdlMapping.spec(s.data().module(), s.node()), s.homeHost());
             }
@@ -158,7 +162,85 @@ public final class NetworkDeployment implements AutoCloseable {
         }
     }
 
-    private void openLink(DeploymentPlan.Link link) throws DeploymentException {
+    /** Tells a host of this network the logger to record with and the coordinator its Servants ask. */
+    private void welcome(String hostName, Host host) throws Refused {
+        if (loggerAddress != null && host.useLogger(loggerAddress)) {
+            LOG.info("host {} records its events with the logger at {}", hostName, loggerAddress);
+        }
+        NetworkCoordinator c = coordinator;
+        if (c != null) {
+            host.joinNetwork(c);
+        }
+    }
+
+    /**
+     * Makes {@code coordinator} the one every host's Servants ask about the whole network (and reshape it
+     * through): told to every host now, and to every host that joins or comes back later.
+     */
+    public void introduce(NetworkCoordinator coordinator) {
+        this.coordinator = coordinator;
+        for (String name : plan.hosts()) {
+            Host h = hosts.get(name);
+            try {
+                if (h != null) {
+                    h.joinNetwork(coordinator);
+                }
+            } catch (SystemException e) {
+                LOG.warn("host {} was not told the coordinator: {}", name, e.toString());
+            }
+        }
+    }
+
+    /**
+     * A host for a structural change: one of the deployment's, or one registered in the naming service that joins
+     * now (told the logger and the coordinator); {@code null} when no live host of that name is registered.
+     */
+    Host join(String name) {
+        Host known = hosts.get(name);
+        if (known != null) {
+            return known;
+        }
+        Optional<Host> found;
+        try {
+            found = directory.find(name).filter(h -> incarnationOf(h) != null);
+        } catch (HostUnreachableException e) {
+            LOG.warn("naming service unreachable while looking for {}: {}", name, e.getMessage());
+            return null;
+        }
+        if (found.isEmpty()) {
+            return null;
+        }
+        try {
+            welcome(name, found.get());
+        } catch (Refused | SystemException e) {
+            LOG.warn("host {} joins without logger or coordinator: {}", name, e instanceof Refused r ? r.reason : e);
+        }
+        hosts.put(name, found.get());
+        incarnations.put(name, incarnationOf(found.get()));
+        return found.get();
+    }
+
+    /** The plan after a structural change executed on the hosts: what is watched and re-created from now on. */
+    void replacePlan(DeploymentPlan next) {
+        this.plan = next;
+    }
+
+    /** Closes both ends of a link; an end whose host does not answer is left (it dies with its node). */
+    void closeLink(DeploymentPlan.Link link) {
+        for (String end : List.of(link.fromHost(), link.toHost())) {
+            Host h = hosts.get(end);
+            if (h != null) {
+                try {
+                    h.closeLink(link.id());
+                } catch (SystemException e) {
+                    LOG.info("could not close {} on {}: {}", link, end, e.toString());
+                }
+            }
+        }
+        brokenLinks.remove(link.id());
+    }
+
+    void openLink(DeploymentPlan.Link link) throws DeploymentException {
         Host from = hosts.get(link.fromHost());
         Host to = hosts.get(link.toHost());
         try {
@@ -207,7 +289,43 @@ public final class NetworkDeployment implements AutoCloseable {
         }
     }
 
+    /**
+     * Runs a change of the running network ({@link DistributedControl}) while no other runs and no lost host is being
+     * re-created: a host that comes back is re-created either from the plan before a change or from the plan after it.
+     */
+    <T> T changingShares(Supplier<T> change) {
+        changes.lock();
+        try {
+            return change.get();
+        } finally {
+            changes.unlock();
+        }
+    }
+
+    /**
+     * {@link #changingShares} for a change asked by a host's Relation: empty, at once, when another change runs. A
+     * Relation a change starts fires on the thread of that change's commit on its host, while the coordinator waits
+     * for the commit; were it to wait for the coordinator in turn, neither would ever finish.
+     */
+    <T> Optional<T> ifNoChangeRuns(Supplier<T> change) {
+        if (!changes.tryLock()) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(change.get());
+        } finally {
+            changes.unlock();
+        }
+    }
+
     private void tryRecover(String name) {
+        changingShares(() -> {
+            recover(name);
+            return null;
+        });
+    }
+
+    private void recover(String name) {
         Optional<Host> found;
         try {
             found = directory.find(name);

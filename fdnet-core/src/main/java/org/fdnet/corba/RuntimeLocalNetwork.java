@@ -24,6 +24,7 @@ import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.RuntimeOptions;
 import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.runtime.Value;
+import org.fdnet.runtime.servant.WholeNetwork;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -122,6 +123,43 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
                 throw new IllegalStateException(loaded.reason());
             }
         }
+    }
+
+    @Override
+    public String check(String description, NetworkEdit edit) {
+        try {
+            String problem = runtime.check(edit, true); // reshape loads the modules the edit adds
+            return problem == null ? null : description + ": " + problem;
+        } catch (RuntimeException e) {
+            return description + ": " + (e.getMessage() == null ? e.toString() : e.getMessage());
+        }
+    }
+
+    @Override
+    public void reshape(String description, NetworkEdit edit) {
+        Set<String> before = moduleNames();
+        apply(description + " on " + hostName, edit);
+        for (String module : moduleNames()) {
+            if (!before.contains(module) && !controller.loadedModules().contains(module)) {
+                ChangeOutcome loaded = controller.load(module);
+                if (!loaded.executed()) {
+                    throw new IllegalStateException(loaded.reason());
+                }
+            }
+        }
+    }
+
+    private Set<String> moduleNames() {
+        return runtime.readDefinition(d -> {
+            Set<String> names = new LinkedHashSet<>();
+            d.modules().forEach(m -> names.add(m.name()));
+            return names;
+        });
+    }
+
+    @Override
+    public void seeWholeNetwork(WholeNetwork whole) {
+        runtime.seeWholeNetwork(whole);
     }
 
     @Override

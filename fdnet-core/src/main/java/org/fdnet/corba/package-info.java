@@ -33,6 +33,15 @@
  *   "hold main" ─▶ DistributedControl ─prepareChange─▶ Host flyer, Host crawler … ─▶ all ""? ─commitChange─▶ each
  *                                                                           a reason? ─abortChange──▶ the prepared
  * </pre>
+ * Structural changes (load, unload, an edit, a Relation's Paste on any host) change the deployment itself: the
+ * coordinator plans the whole network after the change ({@link org.fdnet.corba.DeploymentPlan#next}), derives each
+ * host's part ({@link org.fdnet.corba.PlanDifference}) and prepares it there ({@link org.fdnet.corba.ShareChanges}:
+ * allowed classes, free names), then closes the links that go, commits on every host and opens the new links.
+ * <pre>
+ *   Relation on flyer ─Servants─▶ CoordinatorView ══describeNetwork / applyEdit══▶ CoordinatorServant (fdnet run)
+ *                                                   DistributedControl ─prepareShareChange─▶ every host it touches
+ *                                                   all ""? close links ─commitChange─▶ each ─▶ acceptLink/forward
+ * </pre>
  * Logging: every host records its engine's events with the logger through its own LoggerClient
  * ({@code fdnet host --logger}, or the address {@code useLogger} hands over at deployment).
  */

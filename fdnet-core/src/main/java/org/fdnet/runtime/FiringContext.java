@@ -21,7 +21,6 @@ final class FiringContext implements RelationContext {
     private boolean periodic;
     private long now;
     private String lastReport;
-    private Servants servants;
 
     FiringContext(RelationNode node, Dataflow flow) {
         this.node = node;
@@ -170,10 +169,8 @@ final class FiringContext implements RelationContext {
 
     @Override
     public Servants servants() {
-        if (servants == null) {
-            servants = flow.servantsFor(node);
-        }
-        return servants;
+        // Not kept between firings: the distribution layer may install the whole network's view meanwhile.
+        return flow.servantsFor(node);
     }
 
     @Override

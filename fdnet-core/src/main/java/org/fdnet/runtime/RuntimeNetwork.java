@@ -27,6 +27,7 @@ import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.loading.NodeClassResolver;
 import org.fdnet.runtime.servant.Servants;
+import org.fdnet.runtime.servant.WholeNetwork;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -69,6 +70,7 @@ public final class RuntimeNetwork implements AutoCloseable {
     private Set<LiveLink> links = new LinkedHashSet<>();
     private volatile List<RemoteLink> remoteLinks = List.of();
     private volatile boolean closed;
+    private volatile WholeNetwork wholeNetwork;
 
     private RuntimeNetwork(NetworkInfo definition, RuntimeOptions options) {
         options.seal();
@@ -149,7 +151,15 @@ public final class RuntimeNetwork implements AutoCloseable {
     }
 
     private Servants servantsOf(RelationNode node) {
-        return new Servants(this, node.ref, node.id);
+        return new Servants(this, node.ref, node.id, wholeNetwork);
+    }
+
+    /**
+     * From now on, the Servants of this engine's Relations see and reshape {@code whole} (the network over every
+     * host this engine runs a share of) instead of this engine alone; {@code null} goes back to this engine.
+     */
+    public void seeWholeNetwork(WholeNetwork whole) {
+        this.wholeNetwork = whole;
     }
 
     public void addSink(EventSink sink) {
@@ -253,6 +263,45 @@ public final class RuntimeNetwork implements AutoCloseable {
             flow.request(r);
         }
         return settle(outcome);
+    }
+
+    /**
+     * Whether {@code edit} could be applied now, checked as a change checks it — the edit on a copy of the
+     * definition, then every node it would start constructed and initialised — without changing anything: the new
+     * instances are dropped. The first phase of a change prepared on several hosts before any of them commits.
+     *
+     * @param loadAddedModules whether the modules the edit adds will be loaded with it (their nodes are checked too)
+     * @return {@code null}, or the reason the change would be refused
+     */
+    public String check(NetworkEdit edit, boolean loadAddedModules) {
+        structure.lock();
+        try {
+            if (closed) {
+                return "the network is stopped";
+            }
+            NetworkInfo candidate = definition.copy();
+            edit.applyTo(candidate);
+            Set<String> loadedNext = new LinkedHashSet<>(loaded);
+            loadedNext.add(ModuleInfo.MAIN);
+            if (loadAddedModules) {
+                candidate.modules().stream().filter(m -> definition.module(m.name()) == null)
+                        .forEach(m -> loadedNext.add(m.name()));
+            }
+            loadedNext.removeIf(m -> candidate.module(m) == null);
+            Prepared prepared = prepare(StructurePlan.of(candidate, loadedNext, options.placement()), Set.of());
+            for (Relation r : prepared.relations().values()) {
+                try {
+                    r.close();
+                } catch (RuntimeException e) {
+                    LOG.warn("a Relation made only to check a change did not close cleanly", e);
+                }
+            }
+            return null;
+        } catch (EditRefusedException | IllegalArgumentException e) {
+            return e.getMessage();
+        } finally {
+            structure.unlock();
+        }
     }
 
     private ChangeOutcome settle(ChangeOutcome outcome) {

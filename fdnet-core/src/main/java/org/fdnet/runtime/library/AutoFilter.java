@@ -15,7 +15,7 @@ import org.fdnet.runtime.servant.Servants;
  * {@code sensorClass}, default {@link DoubleSensor} — and gives each one that has none a low-pass filter:
  * it creates (Paste) a Data {@code <sensor> filtered} and a {@link LowPass} Relation {@code <sensor> filter}
  * with {@code alpha} (default 0.2) reading the sensor and writing the filtered Data, in module
- * {@code module} (default: the sensor's own). Looks every {@code period} ms (give it one) and when an
+ * {@code module} (default: the sensor's own), on the sensor's host. Looks every {@code period} ms (give it one) and when an
  * input changes. Reports how many filters it made.
  */
 public class AutoFilter extends Relation {
@@ -45,8 +45,11 @@ public class AutoFilter extends Relation {
             if (servants.reflect().describe(filter) != null) {
                 continue;
             }
-            NodeInfo filtered = NodeInfo.data(ref.node() + " filtered", DoubleData.class.getName());
-            NodeInfo relation = NodeInfo.relation(filter.node(), LowPass.class.getName(), Parameter.named("alpha", alpha));
+            // the filter lives with its sensor: on a network over several hosts, on the sensor's host
+            NodeInfo filtered = NodeInfo.data(ref.node() + " filtered", DoubleData.class.getName())
+                    .withHost(sensor.host());
+            NodeInfo relation = NodeInfo.relation(filter.node(), LowPass.class.getName(), Parameter.named("alpha", alpha))
+                    .withHost(sensor.host());
             var outcome = servants.paste().pasteRelation(target, relation, List.of(filtered), List.of(ref),
                     List.of(new NodeRef(target, filtered.name())));
             if (outcome.executed()) {

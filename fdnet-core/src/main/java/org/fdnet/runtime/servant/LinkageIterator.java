@@ -9,13 +9,12 @@ import java.util.Set;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.ConnectionKind;
 import org.fdnet.netinfo.LinkedConnection;
+import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.runtime.Controller;
-import org.fdnet.runtime.RuntimeNetwork;
 
 /**
  * The LinkageIterator servant: follows the network from a node like {@link NetworkIterator}, but yields
- * the connections it crosses, each with whether it is live here (both ends running, active).
+ * the connections it crosses, each with whether it is live (both ends running, active).
  */
 public final class LinkageIterator implements Iterable<LinkageIterator.Linkage> {
     /** One connection crossed: declared by {@code module}; {@code live} when both ends run here. */
@@ -28,35 +27,31 @@ public final class LinkageIterator implements Iterable<LinkageIterator.Linkage> 
         this.linkages = linkages;
     }
 
-    static LinkageIterator downstream(RuntimeNetwork network, Controller controller, NodeRef start) {
-        List<LinkedConnection> crossed = network.readDefinition(d -> {
-            List<LinkedConnection> result = new ArrayList<>();
-            Set<NodeRef> seen = new HashSet<>();
-            ArrayDeque<NodeRef> queue = new ArrayDeque<>();
-            queue.add(start);
-            seen.add(start);
-            while (!queue.isEmpty()) {
-                NodeRef at = queue.poll();
-                for (LinkedConnection lc : d.connectionsOf(at)) {
-                    ConnectionInfo c = lc.connection();
-                    NodeRef from = c.kind() == ConnectionKind.READER ? c.data() : c.relation();
-                    NodeRef to = c.kind() == ConnectionKind.READER ? c.relation() : c.data();
-                    if (from.equals(at)) {
-                        result.add(lc);
-                        if (seen.add(to)) {
-                            queue.add(to);
-                        }
+    static LinkageIterator downstream(ServantScope scope, NodeRef start) {
+        WholeNetwork.Snapshot snapshot = scope.snapshot();
+        NetworkInfo d = snapshot.definition();
+        List<LinkedConnection> crossed = new ArrayList<>();
+        Set<NodeRef> seen = new HashSet<>();
+        ArrayDeque<NodeRef> queue = new ArrayDeque<>();
+        queue.add(start);
+        seen.add(start);
+        while (!queue.isEmpty()) {
+            NodeRef at = queue.poll();
+            for (LinkedConnection lc : d.connectionsOf(at)) {
+                ConnectionInfo c = lc.connection();
+                NodeRef from = c.kind() == ConnectionKind.READER ? c.data() : c.relation();
+                NodeRef to = c.kind() == ConnectionKind.READER ? c.relation() : c.data();
+                if (from.equals(at)) {
+                    crossed.add(lc);
+                    if (seen.add(to)) {
+                        queue.add(to);
                     }
                 }
             }
-            return result;
-        });
+        }
         List<Linkage> linkages = new ArrayList<>();
         for (LinkedConnection lc : crossed) {
-            ConnectionInfo c = lc.connection();
-            boolean live = c.exists() && controller.value(c.data()) != null && controller.relationState(c.relation()) != null
-                    && controller.loadedModules().contains(lc.module());
-            linkages.add(new Linkage(lc.module(), c, live));
+            linkages.add(new Linkage(lc.module(), lc.connection(), scope.live(snapshot, lc)));
         }
         return new LinkageIterator(linkages);
     }

@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.runtime.RuntimeNetwork;
 
 /**
  * The thesis's Iterator servant: follows the network from a node, breadth first, along the way values
@@ -18,12 +17,12 @@ public final class NetworkIterator implements Iterable<NodeRef> {
         this.nodes = nodes;
     }
 
-    static NetworkIterator downstream(RuntimeNetwork network, NodeRef start) {
-        return new NetworkIterator(network.readDefinition(d -> new ArrayList<>(d.descendants(start))));
+    static NetworkIterator downstream(ServantScope scope, NodeRef start) {
+        return new NetworkIterator(scope.read(d -> new ArrayList<>(d.descendants(start))));
     }
 
-    static NetworkIterator upstream(RuntimeNetwork network, NodeRef start) {
-        return new NetworkIterator(network.readDefinition(d -> new ArrayList<>(d.ancestors(start))));
+    static NetworkIterator upstream(ServantScope scope, NodeRef start) {
+        return new NetworkIterator(scope.read(d -> new ArrayList<>(d.ancestors(start))));
     }
 
     @Override

@@ -9,28 +9,29 @@ import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.ChangeOutcome;
-import org.fdnet.runtime.Controller;
 import org.fdnet.runtime.NetworkEdit;
 import org.fdnet.runtime.NetworkEdits;
 
 /**
  * The Paste servant: creates and destroys nodes, connects and disconnects them. Each call is one change
- * request of the controller, logged with the calling Relation as its source; a refused one changes
- * nothing and says why. Connections are declared by the module of their Relation end.
+ * request of the controller, logged with the calling Relation as its source (on one host; across hosts each host
+ * logs its part as its controller's); a refused one changes nothing and says why. Connections are declared by the module of their Relation end. A node goes to the host its
+ * {@code host} names: on a network over several hosts, Paste creates and connects it there (when that host allows
+ * its class), prepared and committed on every host the change touches — refused anywhere, it changes nothing.
  */
 public final class Paste {
-    private final Controller controller;
+    private final ServantScope scope;
 
-    Paste(Controller controller) {
-        this.controller = controller;
+    Paste(ServantScope scope) {
+        this.scope = scope;
     }
 
     public ChangeOutcome create(String module, NodeInfo node) {
-        return controller.apply("create " + module + "/" + node.name(), NetworkEdits.addNode(module, node));
+        return scope.apply("create " + module + "/" + node.name(), NetworkEdits.addNode(module, node));
     }
 
     public ChangeOutcome destroy(NodeRef node) {
-        return controller.apply("destroy " + node, NetworkEdits.deleteNode(node));
+        return scope.apply("destroy " + node, NetworkEdits.deleteNode(node));
     }
 
     /** The Relation {@code relation} reads {@code data}. */
@@ -44,12 +45,12 @@ public final class Paste {
     }
 
     private ChangeOutcome connect(ConnectionInfo c) {
-        return controller.apply("connect " + c, NetworkEdits.addConnection(c.relation().module(), c));
+        return scope.apply("connect " + c, NetworkEdits.addConnection(c.relation().module(), c));
     }
 
     /** Removes the connection of this kind between the two nodes, whichever module declares it. */
     public ChangeOutcome disconnect(ConnectionKind kind, NodeRef data, NodeRef relation) {
-        return controller.apply("disconnect " + kind.label() + " " + data + " / " + relation, network -> {
+        return scope.apply("disconnect " + kind.label() + " " + data + " / " + relation, network -> {
             for (var linked : network.connectionsOf(data)) {
                 ConnectionInfo c = linked.connection();
                 if (c.kind() == kind && c.relation().equals(relation)) {
@@ -63,7 +64,7 @@ public final class Paste {
 
     /** Makes a declared but inactive ({@code exist = no}) connection live (the thesis's "activate"). */
     public ChangeOutcome activate(ConnectionKind kind, NodeRef data, NodeRef relation) {
-        return controller.apply("activate " + kind.label() + " " + data + " / " + relation, network -> {
+        return scope.apply("activate " + kind.label() + " " + data + " / " + relation, network -> {
             for (var linked : network.connectionsOf(data)) {
                 ConnectionInfo c = linked.connection();
                 if (c.kind() == kind && c.relation().equals(relation)) {
@@ -105,6 +106,6 @@ public final class Paste {
                 network.addConnection(module, ConnectionInfo.writer(self, w));
             }
         };
-        return controller.apply("paste " + self, edit);
+        return scope.apply("paste " + self, edit);
     }
 }

@@ -11,19 +11,31 @@ import org.fdnet.runtime.RuntimeNetwork;
  * these it can find ({@link Visitor}), describe ({@link Reflect}), reshape ({@link Paste}) and follow
  * ({@link NetworkIterator}, {@link LinkageIterator}) the whole network, and load or unload modules.
  * Every change goes through the network's controller as a change request whose events name the calling
- * Relation as their source. (Not CORBA servants: those are the {@code …Impl} classes of {@code corba}.)
+ * Relation as their source. On a host of a distributed network they see and reshape every host's nodes through
+ * the {@link WholeNetwork} the distribution layer installed (changes are then prepared and committed on every
+ * host they touch). (Not CORBA servants: those are the {@code …Impl} classes of {@code corba}.)
  */
 public final class Servants {
-    private final RuntimeNetwork network;
     private final NodeRef self;
     private final Controller controller;
+    private final ServantScope scope;
     private final Reflect reflect;
 
+    /** Servants of one engine: they see and change that engine's network. */
     public Servants(RuntimeNetwork network, NodeRef self, int selfId) {
-        this.network = network;
+        this(network, self, selfId, null);
+    }
+
+    /**
+     * Servants of a host's Relation in a network over several hosts: with {@code whole} they see and reshape every
+     * host's nodes; with {@code null}, this engine's only.
+     */
+    public Servants(RuntimeNetwork network, NodeRef self, int selfId, WholeNetwork whole) {
         this.self = self;
         this.controller = network.controllerFor(selfId);
-        this.reflect = new Reflect(network, controller);
+        EngineScope engine = new EngineScope(network, controller);
+        this.scope = whole == null ? engine : new WholeNetworkScope(engine, whole);
+        this.reflect = new Reflect(scope);
     }
 
     /** The Relation these servants work for. */
@@ -32,7 +44,7 @@ public final class Servants {
     }
 
     public Visitor visitor() {
-        return new Visitor(network, reflect);
+        return new Visitor(scope);
     }
 
     public Reflect reflect() {
@@ -40,41 +52,41 @@ public final class Servants {
     }
 
     public Paste paste() {
-        return new Paste(controller);
+        return new Paste(scope);
     }
 
     /** Nodes reachable from {@code start} along the flow of values. */
     public NetworkIterator iterator(NodeRef start) {
-        return NetworkIterator.downstream(network, start);
+        return NetworkIterator.downstream(scope, start);
     }
 
     /** Nodes whose values can reach {@code start}. */
     public NetworkIterator upstream(NodeRef start) {
-        return NetworkIterator.upstream(network, start);
+        return NetworkIterator.upstream(scope, start);
     }
 
     /** Connections crossed following the flow of values from {@code start}. */
     public LinkageIterator linkageIterator(NodeRef start) {
-        return LinkageIterator.downstream(network, controller, start);
+        return LinkageIterator.downstream(scope, start);
     }
 
     public ChangeOutcome load(String module) {
-        return controller.load(module);
+        return scope.load(module);
     }
 
     public ChangeOutcome unload(String module) {
-        return controller.unload(module);
+        return scope.unload(module);
     }
 
     public ChangeOutcome hold(String module) {
-        return controller.hold(module);
+        return scope.hold(module);
     }
 
     public ChangeOutcome resume(String module) {
-        return controller.resume(module);
+        return scope.resume(module);
     }
 
-    /** The controller acting for this Relation (values, parameters, snapshot). */
+    /** The controller of this Relation's own engine (values, parameters, snapshot of this host's share). */
     public Controller controller() {
         return controller;
     }

@@ -4,25 +4,25 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Predicate;
 import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 
 /** The Visitor servant: finds nodes of the network (running ones, or all the definition holds). */
 public final class Visitor {
-    private final org.fdnet.runtime.RuntimeNetwork network;
-    private final Reflect reflect;
+    private final ServantScope scope;
 
-    Visitor(org.fdnet.runtime.RuntimeNetwork network, Reflect reflect) {
-        this.network = network;
-        this.reflect = reflect;
+    Visitor(ServantScope scope) {
+        this.scope = scope;
     }
 
-    /** Running nodes that match, in definition order. */
+    /** Running nodes that match, in definition order (on every host, when the network spans several). */
     public List<NodeDescription> find(Predicate<NodeDescription> filter) {
         List<NodeDescription> result = new ArrayList<>();
-        for (NodeRef ref : defined()) {
-            NodeDescription d = reflect.describe(ref);
+        WholeNetwork.Snapshot snapshot = scope.snapshot();
+        for (NodeRef ref : refs(snapshot.definition())) {
+            NodeDescription d = scope.describe(snapshot, ref);
             if (d != null && d.running() && filter.test(d)) {
                 result.add(d);
             }
@@ -40,9 +40,14 @@ public final class Visitor {
         return find(d -> d.kind() == NodeKind.RELATION);
     }
 
-    /** Running nodes whose class is {@code className} (fully qualified, or the simple name). */
+    /**
+     * Running nodes whose class is {@code className} (fully qualified, or the simple name); a node that names a
+     * library class by its bare name ({@code DoubleSensor}) matches the qualified name too.
+     */
     public List<NodeDescription> byClass(String className) {
-        return find(d -> d.className().equals(className) || d.className().endsWith("." + className));
+        String simple = className.substring(className.lastIndexOf('.') + 1);
+        return find(d -> d.className().equals(className) || d.className().endsWith("." + className)
+                || d.className().equals(simple));
     }
 
     /** Running nodes called {@code name} in any module. */
@@ -52,14 +57,16 @@ public final class Visitor {
 
     /** Every node the definition holds, loaded or not, in order. */
     public List<NodeRef> defined() {
-        return network.readDefinition(def -> {
-            List<NodeRef> refs = new ArrayList<>();
-            for (ModuleInfo m : def.modules()) {
-                for (NodeInfo n : m.nodes()) {
-                    refs.add(new NodeRef(m.name(), n.name()));
-                }
+        return scope.read(Visitor::refs);
+    }
+
+    private static List<NodeRef> refs(NetworkInfo definition) {
+        List<NodeRef> refs = new ArrayList<>();
+        for (ModuleInfo m : definition.modules()) {
+            for (NodeInfo n : m.nodes()) {
+                refs.add(new NodeRef(m.name(), n.name()));
             }
-            return refs;
-        });
+        }
+        return refs;
     }
 }

@@ -12,5 +12,15 @@
  *        └── load/unload/hold/resume modules ───────────────────────────────────────┘ logged with the Relation
  *                                                                                     as source ("proc")
  * </pre>
+ *
+ * <p>Where they look: {@link org.fdnet.runtime.servant.ServantScope}. On one host, the engine itself
+ * ({@code EngineScope}). On a host of a distributed network, the {@link org.fdnet.runtime.servant.WholeNetwork}
+ * the distribution layer installed ({@code WholeNetworkScope}): the whole definition and where each node runs come
+ * from the network's coordinator, this host's own nodes are read from its engine, others' values from their host,
+ * and every change is prepared and committed on every host it touches.
+ * <pre>
+ *   Visitor / Reflect / Iterators ─▶ snapshot (definition + loaded modules + node → host) ─▶ descriptions
+ *   Paste / load / unload / hold / resume ─▶ WholeNetwork ─▶ coordinator ─▶ every host it touches (or refused)
+ * </pre>
  */
 package org.fdnet.runtime.servant;

@@ -1,0 +1,88 @@
+package org.fdnet.corba;
+
+import org.fdnet.corba.idl.Host;
+import org.fdnet.corba.idl.ModuleOp;
+import org.fdnet.corba.idl.NetworkCoordinator;
+import org.fdnet.corba.idl.NetworkCoordinatorHelper;
+import org.fdnet.corba.idl.NetworkCoordinatorPOA;
+import org.fdnet.corba.idl.NetworkDescription;
+import org.fdnet.corba.idl.NodeId;
+import org.fdnet.corba.idl.Outcome;
+import org.fdnet.corba.idl.Refused;
+import org.fdnet.corba.idl.UnknownNode;
+import org.fdnet.corba.idl.Value;
+import java.util.function.Supplier;
+import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.runtime.ChangeOutcome;
+import org.omg.CORBA.SystemException;
+
+/**
+ * The CORBA servant of {@code interface NetworkCoordinator}: what every host's Servants ask about the whole network
+ * and how they reshape it, served by the process that runs the network over a {@link DistributedControl}.
+ * {@link #publish} activates it on that process's ORB and tells every host of the deployment about it.
+ */
+public final class CoordinatorServant extends NetworkCoordinatorPOA {
+    private final DistributedControl control;
+
+    CoordinatorServant(DistributedControl control) {
+        this.control = control;
+    }
+
+    /** Serves {@code control} on {@code orb} and introduces it to every host (now and when hosts join or return). */
+    public static NetworkCoordinator publish(OrbRuntime orb, DistributedControl control) {
+        NetworkCoordinator ref = NetworkCoordinatorHelper.narrow(orb.activate(new CoordinatorServant(control)));
+        control.deployment().introduce(ref);
+        return ref;
+    }
+
+    @Override
+    public NetworkDescription describeNetwork() {
+        return control.description();
+    }
+
+    @Override
+    public Value read(NodeId data) throws UnknownNode, Refused {
+        String home = control.homeOf(IdlMapping.ref(data));
+        Host host = home == null ? null : control.deployment().host(home);
+        if (host == null) {
+            throw new UnknownNode(data);
+        }
+        try {
+            return host.read(data);
+        } catch (SystemException e) {
+            throw new Refused("host " + home + " of " + IdlMapping.ref(data) + " does not answer (" + e + ")");
+        }
+    }
+
+    @Override
+    public Outcome applyEdit(String description, long basedOn, NetworkDescription after) {
+        NetworkInfo definition;
+        try {
+            definition = NetworkDescriptions.decode(after).definition();
+        } catch (RuntimeException e) {
+            return outcome(ChangeOutcome.failed(description, "the edited network is not valid: " + e.getMessage()
+                    + "; nothing changed on any host"));
+        }
+        return whenFree(description, () -> control.applyDefinition(description, basedOn, definition));
+    }
+
+    @Override
+    public Outcome changeModule(ModuleOp op, String moduleName) {
+        return switch (op.value()) {
+            case ModuleOp._MO_LOAD -> whenFree("load " + moduleName, () -> control.load(moduleName));
+            case ModuleOp._MO_UNLOAD -> whenFree("unload " + moduleName, () -> control.unload(moduleName));
+            case ModuleOp._MO_HOLD -> whenFree("hold " + moduleName, () -> control.hold(moduleName));
+            default -> whenFree("resume " + moduleName, () -> control.resume(moduleName));
+        };
+    }
+
+    /** A change a host's Relation asks: refused at once while another change runs (it may be what started it). */
+    private Outcome whenFree(String description, Supplier<ChangeOutcome> change) {
+        return outcome(control.deployment().ifNoChangeRuns(change).orElseGet(() -> ChangeOutcome.failed(description,
+                "another change of this network is being made right now; nothing changed on any host (try again)")));
+    }
+
+    private static Outcome outcome(ChangeOutcome o) {
+        return new Outcome(o.executed(), o.executed() ? o.description() : o.reason());
+    }
+}

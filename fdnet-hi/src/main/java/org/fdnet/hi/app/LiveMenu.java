@@ -53,15 +53,15 @@ final class LiveMenu {
         saveRunning = MenuItems.action("Save Running Network As…", null, this::saveRunning);
         collect.setName("live.collect");
         collect.addActionListener(e -> toggleCollect());
-        menu.add(attach);
-        menu.add(detach);
+        menu.add(attach).setName("live.attach");
+        menu.add(detach).setName("live.detach");
         menu.addSeparator();
         menu.add(collect);
-        menu.add(deploy);
-        menu.add(discard);
+        menu.add(deploy).setName("live.deploy");
+        menu.add(discard).setName("live.discard");
         menu.addSeparator();
-        menu.add(plot);
-        menu.add(saveRunning);
+        menu.add(plot).setName("live.plot");
+        menu.add(saveRunning).setName("live.saveRunning");
     }
 
     JMenu menu() {

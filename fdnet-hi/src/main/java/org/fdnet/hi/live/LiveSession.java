@@ -135,15 +135,11 @@ public final class LiveSession implements AutoCloseable {
         return outcome;
     }
 
-    /** Forgets the pending changes: the editor shows the running network again and the session is live. */
+    /** Forgets the pending changes: the editor shows the running network as it is now, and the session is live. */
     public void discardPending() {
-        NetworkDiff back = NetworkDiff.between(editor.network(), base);
-        if (!back.isEmpty()) {
-            editor.adopt(back.asEdit());
-        }
         collecting = false;
         editor.setGate(this::sendEdit);
-        readSoon();
+        followNow();
     }
 
     private ChangeOutcome sendEdit(String label, NetworkInfo before, NetworkInfo after) {

@@ -17,10 +17,10 @@ import org.junit.jupiter.api.io.TempDir;
 @ExtendWith(RealDisplayExtension.class)
 class LiveEditorGuiTest {
     private static final String[] SHOTS = {"hi-live.png", "hi-live-refused.png", "hi-live-self-organised.png",
-        "hi-live-deploy.png", "hi-live-offline.png"};
+        "hi-live-deploy.png", "hi-live-offline.png", "hi-live-plot.png"};
 
     @Test
-    void shouldEditLiveRefuseFollowTheNetworkManageModulesDeployAllOrNothingAndGoOffline(RealDisplay display,
+    void shouldEditLivePlotRefuseFollowTheNetworkManageModulesDeployAllOrNothingAndGoOffline(RealDisplay display,
             @TempDir Path dir) throws Exception {
         String chosen = System.getProperty("fdnet.hi.images");
         Path images = chosen == null ? dir : Path.of(chosen).toAbsolutePath();

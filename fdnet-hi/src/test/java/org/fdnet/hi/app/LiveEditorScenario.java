@@ -26,6 +26,11 @@ import javax.swing.JTable;
 import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
 import org.fdnet.control.LiveNetwork;
+import org.fdnet.event.client.LoggerClient;
+import org.fdnet.event.client.LoggerClientSettings;
+import org.fdnet.runtime.RuntimeOptions;
+import org.fdnet.viewer.cli.ThrowawayLogger;
+import org.fdnet.viewer.ui.ViewerWindow;
 import org.fdnet.hi.live.InProcessRun;
 import org.fdnet.hi.live.LiveTestNetwork;
 import org.fdnet.hi.live.RunningModulesPanel;
@@ -38,7 +43,8 @@ import org.fdnet.netinfo.xml.NetworkRepository;
 
 /**
  * The editor in live mode, driven like a user on a real display (run in a child JVM by {@link LiveEditorGuiTest})
- * against a network running in the same JVM: an accepted edit, a refused one (Figure 37), a filter the network
+ * against a network running in the same JVM and logging to a real logger: an accepted edit, two Datas plotted in
+ * the viewer, a refused edit (Figure 37), a filter the network
  * builds by itself (Figure 31), a module unloaded and loaded again from the module list, a value sent to a Data,
  * the deploy preview refused and then applied all together, saving the running network, and losing it. Writes
  * its screenshots to the directory given as argument. Prints "SCENARIO PASSED" and exits 0, or what failed and 1.
@@ -63,9 +69,15 @@ public final class LiveEditorScenario {
         Path images = Path.of(args[0]);
         Preferences prefs = Preferences.userRoot().node("org/fdnet/hi/test/" + ProcessHandle.current().pid());
         int code = 1;
-        try (InProcessRun run = LiveTestNetwork.start()) {
-            HiWindow window = HiApplication.start(null, new RecentFiles(prefs));
-            new LiveEditorScenario(window, run, images).run();
+        try (ThrowawayLogger logger = new ThrowawayLogger()) {
+            LoggerClient events = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(), "live editor"));
+            try (InProcessRun run = InProcessRun.start(LiveTestNetwork.definition(),
+                    RuntimeOptions.defaults().workerThreads(2).sink(events))) {
+                HiWindow window = HiApplication.start(null, new RecentFiles(prefs));
+                new LiveEditorScenario(window, run, images).run(logger.viewerAddress());
+            } finally {
+                events.close();
+            }
             System.out.println("SCENARIO PASSED");
             code = 0;
         } catch (Throwable t) {
@@ -83,7 +95,7 @@ public final class LiveEditorScenario {
         return run.live();
     }
 
-    private void run() throws Exception {
+    private void run(String loggerAddress) throws Exception {
         waitFor("the window is shown", () -> window.isShowing() && window.canvas().getWidth() > 0);
         check(edt(() -> window.attach(network(), false)), "attached");
         waitFor("the running network is shown", () -> window.current().editor().network().node(GAIN) != null
@@ -97,6 +109,7 @@ public final class LiveEditorScenario {
         });
 
         acceptedEdit();
+        plot(loggerAddress);
         refusedEdit();
         selfOrganisedChange();
         moduleUnloadAndLoad();
@@ -120,6 +133,39 @@ public final class LiveEditorScenario {
         check("3 * in0".equals(network().snapshot().node(GAIN).parameter("expression")), "the running network has it");
         check(edt(() -> window.status().message()).contains("Executed by live-editor-test"), "the status bar says executed");
         shot("hi-live.png");
+    }
+
+    /** Two Datas selected → Live → Plot: the viewer opens on them and draws their logged values. */
+    private void plot(String loggerAddress) throws Exception {
+        edt(() -> {
+            window.current().scene().select(Set.of(ref("Wave/signal"), ref("Out")));
+            return null;
+        });
+        SwingUtilities.invokeLater(() -> menuItem("live.plot").doClick());
+        JDialog ask = dialogTitled("Plot 2 Data");
+        edt(() -> {
+            find(ask, JTextField.class, null).setText(loggerAddress);
+            return null;
+        });
+        clickButton(ask, "OK");
+        AtomicReference<ViewerWindow> viewer = new AtomicReference<>();
+        waitFor("the viewer opened", () -> {
+            for (Window w : Window.getWindows()) {
+                if (w instanceof ViewerWindow v && v.isShowing()) {
+                    viewer.set(v);
+                    return true;
+                }
+            }
+            return false;
+        });
+        waitFor("the viewer draws both Datas' values", () -> viewer.get().livePlot().data().series().size() == 2
+                && viewer.get().livePlot().data().acceptedEvents() > 20);
+        shot(viewer.get(), "hi-live-plot.png");
+        edt(() -> {
+            viewer.get().dispose();
+            window.current().scene().select(Set.of(GAIN));
+            return null;
+        });
     }
 
     /** A class the network cannot load: refused there, so nothing changes here and the status bar says why. */
@@ -230,10 +276,14 @@ public final class LiveEditorScenario {
 
     private JDialog openPreview() throws Exception {
         SwingUtilities.invokeLater(() -> menuItem("live.deploy").doClick());
+        return dialogTitled("Deploy to");
+    }
+
+    private JDialog dialogTitled(String start) throws Exception {
         AtomicReference<JDialog> found = new AtomicReference<>();
-        waitFor("the deploy preview", () -> {
+        waitFor("the dialog " + start + "…", () -> {
             for (Window w : Window.getWindows()) {
-                if (w instanceof JDialog d && d.isShowing() && d.getTitle().startsWith("Deploy to")) {
+                if (w instanceof JDialog d && d.isShowing() && d.getTitle().startsWith(start)) {
                     found.set(d);
                     return true;
                 }
@@ -319,10 +369,11 @@ public final class LiveEditorScenario {
         robot.waitForIdle();
     }
 
-    /** The showing component of that type whose name is {@code key}. */
+    /** The showing component of that type whose name (or, for buttons, text) is {@code key}; any, for {@code null}. */
     private static <T extends Component> T find(Container root, Class<T> type, String key) {
         for (Component c : root.getComponents()) {
-            if (type.isInstance(c) && c.isShowing() && key.equals(c.getName())) {
+            if (type.isInstance(c) && c.isShowing() && (key == null || key.equals(c.getName())
+                    || c instanceof AbstractButton b && key.equals(b.getText()))) {
                 return type.cast(c);
             }
             if (c instanceof Container inner) {

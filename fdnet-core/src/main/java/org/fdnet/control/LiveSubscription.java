@@ -9,38 +9,35 @@ import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
-import java.util.function.Supplier;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.ChangeListener;
 import org.fdnet.runtime.ChangeOutcome;
-import org.fdnet.runtime.Controller;
 import org.fdnet.runtime.Value;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * One subscriber of a {@link LocalLiveNetwork}: its own thread tells it, in order, every settled change and,
+ * One subscriber of a {@link LiveNetwork} in this process: its own thread tells it, in order, every settled change and,
  * ten times a second, the Datas written since the previous sample. A listener that throws is logged and kept;
  * closing the handle stops the thread and the change listener.
  */
-final class LiveSubscription implements AutoCloseable, ChangeListener {
+public final class LiveSubscription implements AutoCloseable, ChangeListener {
     private static final Logger LOG = LoggerFactory.getLogger(LiveSubscription.class);
     static final long SAMPLE_MILLIS = 100;
 
-    private final Controller controller;
+    private final SampledNetwork network;
     private final LiveNetworkListener listener;
-    private final Supplier<List<NodeRef>> runningDatas;
     private final Consumer<LiveSubscription> onClose;
     private final ScheduledExecutorService thread;
     private final Map<NodeRef, Value> lastSeen = new HashMap<>();
     private volatile boolean structureChanged = true;
     private List<NodeRef> datas = List.of();
 
-    LiveSubscription(String networkName, Controller controller, LiveNetworkListener listener,
-                     Supplier<List<NodeRef>> runningDatas, Consumer<LiveSubscription> onClose) {
-        this.controller = controller;
+    /** A subscription of {@code listener} to {@code network}; {@code onClose} is told when it ends. Call {@link #start()}. */
+    public LiveSubscription(String networkName, SampledNetwork network, LiveNetworkListener listener,
+                            Consumer<LiveSubscription> onClose) {
+        this.network = network;
         this.listener = listener;
-        this.runningDatas = runningDatas;
         this.onClose = onClose;
         this.thread = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "fdnet-live-" + networkName);
@@ -49,8 +46,8 @@ final class LiveSubscription implements AutoCloseable, ChangeListener {
         });
     }
 
-    void start() {
-        controller.addChangeListener(this);
+    public void start() {
+        network.addChangeListener(this);
         thread.scheduleAtFixedRate(this::sample, 0, SAMPLE_MILLIS, TimeUnit.MILLISECONDS);
     }
 
@@ -63,12 +60,12 @@ final class LiveSubscription implements AutoCloseable, ChangeListener {
     private void sample() {
         if (structureChanged) {
             structureChanged = false;
-            datas = runningDatas.get();
+            datas = network.runningDatas();
             lastSeen.keySet().retainAll(datas);
         }
         Map<NodeRef, Value> latest = new LinkedHashMap<>();
         for (NodeRef d : datas) {
-            Value v = controller.value(d);
+            Value v = network.value(d);
             if (v != null && lastSeen.get(d) != v) {
                 lastSeen.put(d, v);
                 latest.put(d, v);
@@ -80,8 +77,8 @@ final class LiveSubscription implements AutoCloseable, ChangeListener {
     }
 
     /** The network stopped: the listener's last call, then the subscription ends. */
-    void disconnect(String reason) {
-        controller.removeChangeListener(this);
+    public void disconnect(String reason) {
+        network.removeChangeListener(this);
         run(() -> listener.disconnected(reason), "disconnected");
         close();
     }
@@ -104,7 +101,7 @@ final class LiveSubscription implements AutoCloseable, ChangeListener {
 
     @Override
     public void close() {
-        controller.removeChangeListener(this);
+        network.removeChangeListener(this);
         thread.shutdown();
         onClose.accept(this);
     }

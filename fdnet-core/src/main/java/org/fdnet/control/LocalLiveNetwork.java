@@ -10,9 +10,11 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.ChangeListener;
 import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.Controller;
 import org.fdnet.runtime.NetworkEdit;
+import org.fdnet.runtime.Value;
 
 /**
  * A {@link LiveNetwork} over the {@link Controller} of a network running in this process.
@@ -31,6 +33,27 @@ public final class LocalLiveNetwork implements LiveNetwork {
     private final String name;
     private final Controller controller;
     private final List<LiveSubscription> subscriptions = new CopyOnWriteArrayList<>();
+    private final SampledNetwork sampled = new SampledNetwork() {
+        @Override
+        public void addChangeListener(ChangeListener listener) {
+            controller.addChangeListener(listener);
+        }
+
+        @Override
+        public void removeChangeListener(ChangeListener listener) {
+            controller.removeChangeListener(listener);
+        }
+
+        @Override
+        public Value value(NodeRef data) {
+            return controller.value(data);
+        }
+
+        @Override
+        public List<NodeRef> runningDatas() {
+            return LocalLiveNetwork.this.runningDatas();
+        }
+    };
 
     public LocalLiveNetwork(String name, Controller controller) {
         this.name = Objects.requireNonNull(name, "name");
@@ -103,7 +126,7 @@ public final class LocalLiveNetwork implements LiveNetwork {
 
     @Override
     public AutoCloseable subscribe(LiveNetworkListener listener) {
-        LiveSubscription s = new LiveSubscription(name, controller, listener, this::runningDatas, subscriptions::remove);
+        LiveSubscription s = new LiveSubscription(name, sampled, listener, subscriptions::remove);
         subscriptions.add(s);
         s.start();
         return s;

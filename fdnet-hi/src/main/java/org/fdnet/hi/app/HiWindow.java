@@ -50,9 +50,7 @@ public final class HiWindow extends JFrame {
     private LiveSession live;
     private RunningModulesPanel runningModules;
     private String offline;
-    private LiveNetworkFinder finder = name -> {
-        throw new java.io.IOException("this editor cannot look up running networks by name");
-    };
+    private LiveNetworkFinder finder = name -> org.fdnet.corba.control.RemoteLiveNetwork.attach(name, null);
 
     public HiWindow(RecentFiles recent) {
         super("FDNet editor");
@@ -264,7 +262,7 @@ public final class HiWindow extends JFrame {
         return runningModules;
     }
 
-    /** How Attach and Deploy find a running network by name. */
+    /** How Attach and Deploy find a running network by name (default: its control object, on this machine or at HOST:PORT). */
     public void setFinder(LiveNetworkFinder finder) {
         this.finder = finder;
     }

@@ -177,7 +177,7 @@ final class LiveMenu {
     private LiveNetwork find(String name) {
         try {
             return window.finder().find(name);
-        } catch (IOException | RuntimeException e) {
+        } catch (RuntimeException e) {
             LOG.warn("cannot attach to {}", name, e);
             window.status().error("Cannot reach the running network " + name + ": " + e.getMessage());
             return null;

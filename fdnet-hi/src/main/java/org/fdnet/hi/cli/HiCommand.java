@@ -10,6 +10,8 @@ import org.fdnet.hi.app.HiWindow;
 import org.fdnet.hi.app.RecentFiles;
 import org.fdnet.hi.app.WindowScreenshot;
 import org.fdnet.control.LiveNetwork;
+import org.fdnet.control.NetworkUnreachableException;
+import org.fdnet.corba.control.RemoteLiveNetwork;
 import org.fdnet.hi.graph.GraphScene;
 import org.fdnet.hi.live.InProcessRun;
 import org.fdnet.hi.live.LiveNetworkFinder;
@@ -35,6 +37,10 @@ public final class HiCommand implements Callable<Integer> {
 
     @Option(names = "--attach", paramLabel = "NAME", description = "attach to the running network published as NAME")
     String attach;
+
+    @Option(names = "--naming", paramLabel = "CORBALOC",
+            description = "with --attach NAME: the naming service to look NAME up in, when it does not run on this machine")
+    String naming;
 
     @Option(names = "--run", description = "run FILE in the editor's process and attach to it (stops when the editor closes)")
     boolean run;
@@ -107,14 +113,17 @@ public final class HiCommand implements Callable<Integer> {
 
     private int show(InProcessRun started) throws Exception {
         HiWindow window = HiApplication.start(file, RecentFiles.forUser());
-        SwingUtilities.invokeAndWait(() -> window.setSize(parseSize()));
+        SwingUtilities.invokeAndWait(() -> {
+            window.setSize(parseSize());
+            window.setFinder(finder());
+        });
         if (started != null) {
             SwingUtilities.invokeAndWait(() -> window.attach(started.live(), false));
         } else if (attach != null) {
             LiveNetwork network;
             try {
                 network = finder().find(attach);
-            } catch (java.io.IOException e) {
+            } catch (NetworkUnreachableException e) {
                 spec.commandLine().getErr().println("fdnet hi --attach " + attach + ": " + e.getMessage());
                 SwingUtilities.invokeAndWait(window::dispose);
                 return 1;
@@ -148,11 +157,10 @@ public final class HiCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** How {@code --attach} and the editor's Live menu find a running network by name. */
-    private static LiveNetworkFinder finder() {
-        return name -> {
-            throw new java.io.IOException("looking up running networks by name is not in this build yet");
-        };
+    /** How {@code --attach} and the editor's Live menu find a running network: by name, HOST:PORT or corbaloc. */
+    private LiveNetworkFinder finder() {
+        String namingService = naming;
+        return name -> RemoteLiveNetwork.attach(name, namingService);
     }
 
     private java.awt.Dimension parseSize() {

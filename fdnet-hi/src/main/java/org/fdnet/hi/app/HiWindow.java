@@ -33,6 +33,7 @@ import org.fdnet.netinfo.xml.Problem;
  * the network is lost).
  */
 public final class HiWindow extends JFrame {
+    private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(HiWindow.class);
     private final StatusBar status = new StatusBar();
     private final RecentFiles recent;
     private final JPanel content = new JPanel(new BorderLayout());
@@ -281,15 +282,22 @@ public final class HiWindow extends JFrame {
         if (live != null) {
             live.close();
         }
-        if (!collecting && (current == null || !java.util.Objects.equals(current.editor().network().name(), network.name())
-                || current.unsaved())) {
-            if (!mayDiscard()) {
-                network.close();
-                return false;
+        try {
+            if (!collecting && (current == null || !java.util.Objects.equals(current.editor().network().name(), network.name())
+                    || current.unsaved())) {
+                if (!mayDiscard()) {
+                    network.close();
+                    return false;
+                }
+                show(OpenNetwork.running(network.snapshot()));
             }
-            show(OpenNetwork.running(network.snapshot()));
+            live = LiveSession.attach(network, current.editor(), current.scene(), new LiveView(), collecting);
+        } catch (RuntimeException e) {
+            LOG.warn("attaching to {} failed", network.name(), e);
+            network.close();
+            status.error("Cannot attach to " + network.name() + ": " + e.getMessage());
+            return false;
         }
-        live = LiveSession.attach(network, current.editor(), current.scene(), new LiveView(), collecting);
         offline = null;
         runningModules = new RunningModulesPanel(live, current.editor().network());
         liveSlot.add(runningModules, BorderLayout.CENTER);

@@ -45,7 +45,9 @@ final class LiveMenu {
         deploy = MenuItems.action("Deploy to Running Network…", "control shift D", this::deploy);
         discard = MenuItems.action("Discard Pending Changes", null, () -> {
             window.live().discardPending();
-            window.status().info("Pending changes discarded; live again");
+            if (window.live() != null) {
+                window.status().info("Pending changes discarded; live again");
+            }
             window.refreshTitle();
             refresh();
         });
@@ -165,8 +167,9 @@ final class LiveMenu {
 
     /** Reads the running network once more (so it holds all it built by itself), then Save As. */
     private void saveRunning() {
-        window.live().followNow();
-        window.fileMenu().saveAs();
+        if (window.live().followNow()) {
+            window.fileMenu().saveAs();
+        }
     }
 
     private String ask(String question) {

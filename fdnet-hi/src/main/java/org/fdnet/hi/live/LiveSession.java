@@ -186,10 +186,20 @@ public final class LiveSession implements AutoCloseable {
         return outcome;
     }
 
-    /** Reads the snapshot now, on this thread, and follows it (before saving the running network). */
-    public void followNow() {
+    /**
+     * Reads the snapshot now, on this thread, and follows it (before saving the running network). False when the
+     * network could not be read: the session has then ended as lost.
+     */
+    public boolean followNow() {
         epoch.incrementAndGet();
-        follow(epoch.get(), network.snapshot(), network.loadedModules(), network.heldModules());
+        try {
+            follow(epoch.get(), network.snapshot(), network.loadedModules(), network.heldModules());
+            return true;
+        } catch (RuntimeException e) {
+            LOG.warn("reading the state of {} failed", network.name(), e);
+            lost("cannot read its state: " + e.getMessage());
+            return false;
+        }
     }
 
     // ---------------------------------------------------------------- following the network

@@ -99,7 +99,9 @@ public final class ControlCommand implements Callable<Integer> {
         out.printf("  modules loaded: %s; on hold: %s%n", network.loadedModules(),
                 network.heldModules().isEmpty() ? "none" : network.heldModules());
         for (ModuleInfo m : snapshot.modules()) {
-            out.printf("  %-24s %s%n", m.name(), m.counts());
+            var c = m.counts();
+            out.printf("  %-24s %d Datas, %d Relations, %d Readers, %d Writers%n", m.name(), c.datas(), c.relations(),
+                    c.readers(), c.writers());
         }
         out.flush();
         return 0;
@@ -186,8 +188,23 @@ public final class ControlCommand implements Callable<Integer> {
         }
     }
 
-    private static String shortText(Value v) {
-        String text = v.text();
-        return text.length() > 40 ? text.substring(0, 37) + "..." : text;
+    /** A number to four significant digits, a vector as its first three elements and its length. */
+    static String shortText(Value v) {
+        switch (v.type()) {
+            case DOUBLE:
+                return String.format(Locale.ROOT, "%.4g", v.asDouble());
+            case DOUBLES:
+                StringJoiner j = new StringJoiner(", ", "[", "]");
+                for (int i = 0; i < Math.min(3, v.length()); i++) {
+                    j.add(String.format(Locale.ROOT, "%.3g", v.element(i)));
+                }
+                if (v.length() > 3) {
+                    j.add("… " + v.length() + " values");
+                }
+                return j.toString();
+            default:
+                String text = v.text();
+                return text.length() > 24 ? text.substring(0, 21) + "..." : text;
+        }
     }
 }

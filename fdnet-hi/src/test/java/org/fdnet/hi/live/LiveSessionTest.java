@@ -237,4 +237,31 @@ class LiveSessionTest {
         assertThat(edt(() -> editor.network().copy())).isEqualTo(last);
         assertThat(edt(() -> editor.addNode("main", NodeInfo.data("Offline", LIB + "DoubleData"))).accepted()).isTrue();
     }
+
+    @Test
+    void shouldDeployANetworkEditedOfflineAsTheDifferenceToTheRunningOne() throws Exception {
+        edt(() -> {
+            session.close();
+            return null;
+        });
+        // edited offline: the same network from its file, with a new Data and the gain changed
+        NetworkInfo offline = LiveTestNetwork.definition();
+        offline.addNode("main", NodeInfo.data("Offline", LIB + "DoubleData"));
+        offline.setParameters(ref("Gain"), List.of(Parameter.named("expression", "7 * in0")));
+        UndoableNetworkEditor offlineEditor = edt(() -> new UndoableNetworkEditor(offline, new NetworkLayout()));
+        GraphScene offlineScene = edt(() -> new GraphScene(offlineEditor));
+
+        LiveSession deploying = edt(() -> LiveSession.attach(network(), offlineEditor, offlineScene, heard, true));
+        assertThat(edt(() -> deploying.pending().entries()).stream().map(NetworkDiff.Entry::text))
+                .containsExactlyInAnyOrder("+ node main/Offline", "~ main/Gain parameter expression 2 * in0 → 7 * in0");
+        assertThat(network().snapshot().node(ref("Offline"))).as("nothing sent before Deploy").isNull();
+
+        ChangeOutcome deployed = edt(deploying::deploy);
+
+        assertThat(deployed.executed()).as(deployed.toString()).isTrue();
+        assertThat(network().snapshot().node(ref("Offline"))).isNotNull();
+        assertThat(network().snapshot().node(ref("Gain")).parameter("expression")).isEqualTo("7 * in0");
+        assertThat(edt(deploying::collecting)).isFalse();
+        session = deploying;
+    }
 }

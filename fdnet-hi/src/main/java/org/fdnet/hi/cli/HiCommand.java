@@ -112,24 +112,24 @@ public final class HiCommand implements Callable<Integer> {
     }
 
     private int show(InProcessRun started) throws Exception {
+        LiveNetwork attached = started == null ? null : started.live();
+        if (attach != null) {
+            try {
+                attached = finder().find(attach);
+            } catch (NetworkUnreachableException e) {
+                spec.commandLine().getErr().println("fdnet hi --attach " + attach + ": " + e.getMessage());
+                return 1;
+            }
+        }
         HiWindow window = HiApplication.start(file, RecentFiles.forUser());
+        LiveNetwork network = attached;
         SwingUtilities.invokeAndWait(() -> {
             window.setSize(parseSize());
             window.setFinder(finder());
-        });
-        if (started != null) {
-            SwingUtilities.invokeAndWait(() -> window.attach(started.live(), false));
-        } else if (attach != null) {
-            LiveNetwork network;
-            try {
-                network = finder().find(attach);
-            } catch (NetworkUnreachableException e) {
-                spec.commandLine().getErr().println("fdnet hi --attach " + attach + ": " + e.getMessage());
-                SwingUtilities.invokeAndWait(window::dispose);
-                return 1;
+            if (network != null) {
+                window.attach(network, false);
             }
-            SwingUtilities.invokeAndWait(() -> window.attach(network, false));
-        }
+        });
         Thread.sleep(400);
         SwingUtilities.invokeAndWait(() -> prepare(window));
         if (screenshot == null) {

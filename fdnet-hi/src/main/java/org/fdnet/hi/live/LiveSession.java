@@ -83,7 +83,7 @@ public final class LiveSession implements AutoCloseable {
                 editor.adopt(toRunning.asEdit());
             }
             if (!Objects.equals(editor.network().name(), snapshot.name())) {
-                editor.network().setName(snapshot.name());
+                editor.adopt(n -> n.setName(snapshot.name())); // the difference leaves names out
             }
         }
         LiveSession session = new LiveSession(network, editor, scene, view, snapshot, collecting);

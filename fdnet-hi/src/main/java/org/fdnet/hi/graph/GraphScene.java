@@ -309,6 +309,17 @@ public final class GraphScene {
         fireValues();
     }
 
+    /** Drops the values of Datas outside {@code modules} (an unloaded module's Datas have none). */
+    public void keepLiveValuesOf(Set<String> modules) {
+        if (liveValues.keySet().stream().allMatch(r -> modules.contains(r.module()))) {
+            return;
+        }
+        Map<NodeRef, String> kept = new HashMap<>(liveValues);
+        kept.keySet().removeIf(r -> !modules.contains(r.module()));
+        liveValues = kept;
+        fireValues();
+    }
+
     /** Detached: no live values any more. */
     public void clearLiveValues() {
         liveValues = Map.of();

@@ -229,6 +229,7 @@ public final class LiveSession implements AutoCloseable {
             return;
         }
         view.modulesChanged(loaded, held);
+        scene.keepLiveValuesOf(loaded);
         if (seen != epoch.get()) {
             readSoon(); // read before our own edit was executed: it would take that edit back for a moment
             return;

@@ -155,11 +155,12 @@ class LiveSessionTest {
 
     @Test
     void shouldUnloadAndReloadAModuleAndShowWhichModulesRun() throws Exception {
-        assertThat(eventually(() -> heard.loaded.contains("Wave"))).isTrue();
+        assertThat(eventually(() -> heard.loaded.contains("Wave") && scene.liveValue(ref("Wave/signal")) != null)).isTrue();
 
         assertThat(edt(() -> session.unload("Wave")).executed()).isTrue();
         assertThat(eventually(() -> !heard.loaded.contains("Wave"))).as("Wave shown as not loaded").isTrue();
         assertThat(network().loadedModules()).doesNotContain("Wave");
+        assertThat(eventually(() -> scene.liveValue(ref("Wave/signal")) == null)).as("no value drawn on an unloaded Data").isTrue();
 
         assertThat(edt(() -> session.load("Wave")).executed()).isTrue();
         assertThat(edt(() -> session.hold("Wave")).executed()).isTrue();

@@ -6,6 +6,7 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import org.fdnet.corba.idl.ChangeOp;
 import org.fdnet.corba.idl.ChangeRequest;
@@ -20,6 +21,7 @@ import org.fdnet.corba.idl.StandInSpec;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.ChangeListener;
 import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.NetworkControl;
 import org.fdnet.runtime.NetworkEdit;
@@ -54,8 +56,26 @@ public final class DistributedControl implements NetworkControl {
     /** Changes with every executed structural change; written under the deployment's change lock, after the plan. */
     private volatile long version = 1;
 
+    private final List<ChangeListener> listeners = new CopyOnWriteArrayList<>();
+
     public DistributedControl(NetworkDeployment deployment) {
         this.deployment = deployment;
+    }
+
+    /** Told of every change request once it settled, whoever made it: an operator, a tool, a Relation's Servants. */
+    public void addChangeListener(ChangeListener listener) {
+        listeners.add(listener);
+    }
+
+    public void removeChangeListener(ChangeListener listener) {
+        listeners.remove(listener);
+    }
+
+    private ChangeOutcome told(ChangeOutcome outcome) {
+        for (ChangeListener l : listeners) {
+            l.changeSettled(outcome);
+        }
+        return outcome;
     }
 
     /** The running definition, including what Relations built through Paste (a copy: editing it changes nothing). */
@@ -93,7 +113,7 @@ public final class DistributedControl implements NetworkControl {
 
     @Override
     public ChangeOutcome apply(String description, NetworkEdit edit) {
-        return deployment.changingShares(() -> applyNow(description, edit));
+        return told(deployment.changingShares(() -> applyNow(description, edit)));
     }
 
     private ChangeOutcome applyNow(String description, NetworkEdit edit) {
@@ -113,18 +133,18 @@ public final class DistributedControl implements NetworkControl {
      * {@code basedOn}; refused when the network changed since (the caller reads it again and retries).
      */
     ChangeOutcome applyDefinition(String description, long basedOn, NetworkInfo after) {
-        return deployment.changingShares(() -> {
+        return told(deployment.changingShares(() -> {
             if (basedOn != version) {
                 return ChangeOutcome.failed(description, "the network changed since it was read (version " + basedOn
                         + ", now " + version + "); nothing changed on any host (try again)");
             }
             return reshape(description, after, deployment.plan().loaded());
-        });
+        }));
     }
 
     @Override
     public ChangeOutcome load(String module) {
-        return deployment.changingShares(() -> loadNow(module));
+        return told(deployment.changingShares(() -> loadNow(module)));
     }
 
     private ChangeOutcome loadNow(String module) {
@@ -144,7 +164,7 @@ public final class DistributedControl implements NetworkControl {
 
     @Override
     public ChangeOutcome unload(String module) {
-        return deployment.changingShares(() -> unloadNow(module));
+        return told(deployment.changingShares(() -> unloadNow(module)));
     }
 
     private ChangeOutcome unloadNow(String module) {
@@ -163,23 +183,23 @@ public final class DistributedControl implements NetworkControl {
 
     @Override
     public ChangeOutcome hold(String module) {
-        return onHostsOf(module, "hold " + module, request(ChangeOp.CO_HOLD, module, null, "", ""));
+        return told(onHostsOf(module, "hold " + module, request(ChangeOp.CO_HOLD, module, null, "", "")));
     }
 
     @Override
     public ChangeOutcome resume(String module) {
-        return onHostsOf(module, "resume " + module, request(ChangeOp.CO_RESUME, module, null, "", ""));
+        return told(onHostsOf(module, "resume " + module, request(ChangeOp.CO_RESUME, module, null, "", "")));
     }
 
     @Override
     public ChangeOutcome setParameter(NodeRef node, String name, String value) {
-        return onHomeOf(node, "set " + node + ":" + name + "=" + value,
-                request(ChangeOp.CO_SET_PARAMETER, "", node, name, value));
+        return told(onHomeOf(node, "set " + node + ":" + name + "=" + value,
+                request(ChangeOp.CO_SET_PARAMETER, "", node, name, value)));
     }
 
     @Override
     public ChangeOutcome send(NodeRef data, String text) {
-        return onHomeOf(data, "send " + data + "=" + text, request(ChangeOp.CO_SEND, "", data, "", text));
+        return told(onHomeOf(data, "send " + data + "=" + text, request(ChangeOp.CO_SEND, "", data, "", text)));
     }
 
     private static ChangeRequest request(ChangeOp op, String module, NodeRef node, String name, String value) {

@@ -17,6 +17,8 @@ import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.corba.control.ControlPublication;
+import org.fdnet.corba.control.DistributedLiveNetwork;
 import org.fdnet.runtime.cli.ControlCommands;
 import org.fdnet.runtime.cli.ValueAssignment;
 import org.fdnet.runtime.Placement;
@@ -94,6 +96,8 @@ public final class DistributedRun {
         CountDownLatch stop = new CountDownLatch(1);
         Thread hook = new Thread(stop::countDown, "fdnet-run-stop");
         Runtime.getRuntime().addShutdownHook(hook);
+        DistributedLiveNetwork live = null;
+        ControlPublication published = null;
         try {
             out.printf("running on %d hosts: %s; %d cross-host links%n", plan.hosts().size(), shares(plan),
                     plan.links().size());
@@ -103,7 +107,9 @@ public final class DistributedRun {
             }
             DistributedControl control = new DistributedControl(deployment);
             CoordinatorServant.publish(local.orb(), control); // every host's Servants now see the whole network
-            new ControlCommands(control, out).readFrom(System.in);
+            live = new DistributedLiveNetwork(publishedName(request), control, deployment);
+            published = publishControl(live, local, out, err);
+            new ControlCommands(live, out).readFrom(System.in);
             long end = request.duration() == null ? Long.MAX_VALUE : started + request.duration().toNanos();
             while (System.nanoTime() < end) {
                 long wait = Math.min(TimeUnit.SECONDS.toNanos(1), end - System.nanoTime());
@@ -113,6 +119,9 @@ public final class DistributedRun {
                 status(out, deployment, local, started);
             }
         } finally {
+            if (published != null) {
+                published.close("the network " + publishedName(request) + " stopped");
+            }
             summary(out, deployment, local, started);
             deployment.close();
             local.close();
@@ -128,6 +137,25 @@ public final class DistributedRun {
             }
         }
         return 0;
+    }
+
+    private static String publishedName(Request request) {
+        return org.fdnet.runtime.cli.RunCommand.publishedName(request.definition(), request.file());
+    }
+
+    /** Registers the run's control object in its naming service; a run that cannot still runs, and says so. */
+    private static ControlPublication publishControl(DistributedLiveNetwork live, HostProcess local, PrintWriter out,
+                                                     PrintWriter err) {
+        try {
+            ControlPublication p = ControlPublication.inNaming(live, local.orb());
+            out.println(p.announcement());
+            out.flush();
+            return p;
+        } catch (RuntimeException e) {
+            err.println("the control object is not published: " + e.getMessage());
+            err.flush();
+            return null;
+        }
     }
 
     private static boolean applySets(List<String> sets, DeploymentPlan plan, NetworkDeployment deployment,

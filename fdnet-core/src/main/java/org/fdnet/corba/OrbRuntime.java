@@ -47,8 +47,14 @@ public final class OrbRuntime implements AutoCloseable {
 
     public static OrbRuntime start(OrbSettings settings) {
         Objects.requireNonNull(settings, "settings");
+        return start(settings, settings.toOrbProperties());
+    }
+
+    /** Starts an ORB with {@code properties} made by {@code settings} (e.g. {@link OrbSettings#toOrbProperties(String, String, String)}). */
+    public static OrbRuntime start(OrbSettings settings, java.util.Properties properties) {
+        Objects.requireNonNull(settings, "settings");
         prepareJvm();
-        ORB orb = ORB.init(new String[0], settings.toOrbProperties());
+        ORB orb = ORB.init(new String[0], properties);
         try {
             POA root = POAHelper.narrow(orb.resolve_initial_references("RootPOA"));
             root.the_POAManager().activate();

@@ -41,6 +41,8 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
     private static final String NAMING_PRINT_IOR = "jacorb.naming.print_ior";
     private static final String NAMING_KEY = "jacorb.orb.objectKeyMap.NameService";
     private static final String NAMING_DB_DIR = "jacorb.naming.db_dir";
+    private static final String IMPL_NAME = "jacorb.implname";
+    private static final String OBJECT_KEY_MAP = "jacorb.orb.objectKeyMap.";
 
     public OrbSettings {
         Objects.requireNonNull(bindAddress, "bindAddress");
@@ -108,6 +110,18 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
         p.setProperty(POA_QUEUE_MIN, Integer.toString(Math.max(1, poaQueueMax / 2)));
         p.setProperty(POA_THREADS_MAX, Integer.toString(poaThreadsMax));
         p.setProperty(POA_THREADS_MIN, Integer.toString(Math.min(4, poaThreadsMax)));
+        return p;
+    }
+
+    /**
+     * The properties of an ORB that serves one object at a well-known address, {@code corbaloc::ADDRESS:PORT/shortKey}
+     * (a network's control object): persistent object keys start with {@code implName}, and {@code shortKey}
+     * maps to the object's full key, {@code implName/POA/id}.
+     */
+    public Properties toOrbProperties(String implName, String shortKey, String objectKey) {
+        Properties p = toOrbProperties();
+        p.setProperty(IMPL_NAME, implName);
+        p.setProperty(OBJECT_KEY_MAP + shortKey, objectKey);
         return p;
     }
 

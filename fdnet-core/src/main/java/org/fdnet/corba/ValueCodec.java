@@ -49,4 +49,14 @@ public final class ValueCodec {
             default -> throw new IllegalArgumentException("unknown value kind " + v.discriminator().value());
         };
     }
+
+    /** A running network's value as an IDL value. */
+    public static Value encode(org.fdnet.runtime.Value value) {
+        return encode(RuntimeLocalNetwork.toJava(value));
+    }
+
+    /** An IDL value as a running network's value. */
+    public static org.fdnet.runtime.Value decodeRuntime(Value v) {
+        return RuntimeLocalNetwork.toRuntime(decode(v));
+    }
 }

@@ -53,6 +53,7 @@ final class GuardedXmlReader {
     static final long MAX_FILE_BYTES = 64L * 1024 * 1024;
 
     private final Path file;
+    private final byte[] content;
     private final BundledDtd dtd;
     private DoctypeSupplier doctype;
     private final List<Problem> problems = new ArrayList<>();
@@ -64,7 +65,13 @@ final class GuardedXmlReader {
     private int innerComments;
 
     GuardedXmlReader(Path file, BundledDtd dtd) {
-        this.file = file;
+        this(file, null, dtd);
+    }
+
+    /** Reads {@code content} (a document that did not come from a file) and names {@code source} in problems. */
+    GuardedXmlReader(Path source, byte[] content, BundledDtd dtd) {
+        this.file = source;
+        this.content = content;
         this.dtd = dtd;
     }
 
@@ -101,13 +108,13 @@ final class GuardedXmlReader {
      */
     <T> T read(JAXBContext context, Class<T> rootType) {
         try {
-            long size = Files.size(file);
+            long size = content != null ? content.length : Files.size(file);
             if (size > MAX_FILE_BYTES) {
                 add(0, 0, "the file is " + size / (1024 * 1024) + " MiB; FDNet reads files of at most "
                         + MAX_FILE_BYTES / (1024 * 1024) + " MiB");
                 return null;
             }
-            doctype = DoctypeSupplier.prepare(Files.readAllBytes(file), dtd);
+            doctype = DoctypeSupplier.prepare(content != null ? content : Files.readAllBytes(file), dtd);
             InputSource source = doctype.source();
             source.setSystemId(file.toUri().toString());
             Unmarshaller unmarshaller = context.createUnmarshaller();

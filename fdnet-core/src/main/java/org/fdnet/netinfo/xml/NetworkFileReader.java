@@ -44,6 +44,12 @@ final class NetworkFileReader {
         this.xml = new GuardedXmlReader(file, BundledDtd.CNET);
     }
 
+    /** Reads a document held in memory; problems name {@code source}. */
+    NetworkFileReader(Path source, byte[] content) {
+        this.file = source;
+        this.xml = new GuardedXmlReader(source, content, BundledDtd.CNET);
+    }
+
     NetworkDocument read() throws NetworkFileException {
         CnetElement root = xml.read(JaxbContexts.network(), CnetElement.class);
         if (root == null || !xml.problems().isEmpty()) {

@@ -25,6 +25,20 @@ public final class NetworkRepository {
         return read(file).network();
     }
 
+    /**
+     * Reads a definition sent as text (the control object's snapshot and edits), validated as a file is; each
+     * problem is reported as {@code source:line:col: message}.
+     */
+    public static NetworkInfo fromText(String xml, String source) throws NetworkFileException {
+        return new NetworkFileReader(Path.of(source), xml.getBytes(java.nio.charset.StandardCharsets.UTF_8)).read()
+                .network();
+    }
+
+    /** The canonical text of {@code network}: what {@link #fromText} reads back into an equal definition. */
+    public static String toText(NetworkInfo network) {
+        return new String(toBytes(network, DEFAULT_SYSTEM_ID), java.nio.charset.StandardCharsets.UTF_8);
+    }
+
     /** Loads a file keeping what {@code fmt} needs to rewrite it in place (its DOCTYPE). */
     public static NetworkDocument read(Path file) throws NetworkFileException {
         return new NetworkFileReader(file).read();

@@ -31,7 +31,10 @@ import org.fdnet.runtime.RuntimeOptions;
 import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.runtime.Value;
 import org.fdnet.runtime.loading.ClassLoadingPolicy;
+import org.fdnet.control.LocalLiveNetwork;
+import org.fdnet.corba.cli.ControlOptions;
 import org.fdnet.corba.cli.DistributionOptions;
+import org.fdnet.corba.control.ControlPublication;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -90,6 +93,9 @@ public final class RunCommand implements Callable<Integer> {
 
     @Mixin
     DistributionOptions distribution;
+
+    @Mixin
+    ControlOptions control;
 
     @Spec
     CommandSpec spec;
@@ -181,11 +187,19 @@ public final class RunCommand implements Callable<Integer> {
             }
         }, "fdnet-run-stop");
         Runtime.getRuntime().addShutdownHook(hook);
+        ControlPublication published = null;
         try {
             Controller controller = network.controller();
             out.printf("running: modules %s, %d worker threads%n", controller.loadedModules(), network.workerThreads());
             out.flush();
             if (!applyRequests(controller, err)) {
+                return 2;
+            }
+            try {
+                published = control.publish(new LocalLiveNetwork(publishedName(definition, file), controller), out);
+            } catch (IllegalArgumentException e) {
+                err.println(e.getMessage());
+                err.flush();
                 return 2;
             }
             new ControlCommands(controller, out).readFrom(System.in);
@@ -207,6 +221,9 @@ public final class RunCommand implements Callable<Integer> {
                 out.flush();
             }
         } finally {
+            if (published != null) {
+                published.close("the network " + publishedName(definition, file) + " stopped");
+            }
             if (plant != null) {
                 plant.close();
             }
@@ -355,6 +372,15 @@ public final class RunCommand implements Callable<Integer> {
             text = b.append(v.type() == org.fdnet.event.ValueType.DOUBLES ? "]" : "").toString();
         }
         return text.length() > 80 ? text.substring(0, 77) + "..." : text;
+    }
+
+    /** The name a run publishes its control object under: the network's, else the file's without {@code .fdn}. */
+    public static String publishedName(NetworkInfo definition, Path file) {
+        if (definition.name() != null && !definition.name().isBlank()) {
+            return definition.name();
+        }
+        String base = file.getFileName().toString();
+        return base.endsWith(".fdn") ? base.substring(0, base.length() - 4) : base;
     }
 
     private static String name(NetworkInfo n) {

@@ -94,7 +94,7 @@ final class FileMenu {
         return saveTo(current.file());
     }
 
-    private boolean saveAs() {
+    boolean saveAs() {
         JFileChooser chooser = chooser("FDNet networks (.fdn)", "fdn");
         if (chooser.showSaveDialog(window) != JFileChooser.APPROVE_OPTION) {
             return false;

@@ -15,6 +15,11 @@ import javax.swing.WindowConstants;
 import org.fdnet.hi.edit.EditorListener;
 import org.fdnet.hi.graph.GraphCanvas;
 import org.fdnet.hi.graph.SceneListener;
+import org.fdnet.hi.live.LiveNetworkFinder;
+import org.fdnet.hi.live.LiveSession;
+import org.fdnet.hi.live.LiveSessionListener;
+import org.fdnet.hi.live.RunningModulesPanel;
+import org.fdnet.control.LiveNetwork;
 import org.fdnet.netinfo.ModuleCounts;
 import org.fdnet.netinfo.xml.NetworkFileException;
 import org.fdnet.netinfo.xml.Problem;
@@ -23,9 +28,12 @@ import org.fdnet.netinfo.xml.Problem;
  * The editor's main window. It shows either one open network (module bar and search bar above the graphic
  * panel, the node information panel at the right) or, for a file with problems, the read-only
  * {@link ProblemView}; the status bar is always at the bottom. The menus live in {@link FileMenu},
- * {@link EditMenu} and {@link ViewMenu}.
+ * {@link EditMenu}, {@link ViewMenu} and {@link LiveMenu}. Attached to a running network (a {@link LiveSession}),
+ * the side panel also lists the running modules and the title says "live" (or "collecting", or "offline" once
+ * the network is lost).
  */
 public final class HiWindow extends JFrame {
+    private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(HiWindow.class);
     private final StatusBar status = new StatusBar();
     private final RecentFiles recent;
     private final JPanel content = new JPanel(new BorderLayout());
@@ -37,6 +45,13 @@ public final class HiWindow extends JFrame {
     private final FileMenu fileMenu;
     private final EditMenu editMenu;
     private final ViewMenu viewMenu;
+    private final LiveMenu liveMenu;
+    private final JPanel liveSlot = new JPanel(new BorderLayout());
+    private NodeInfoPanel info;
+    private LiveSession live;
+    private RunningModulesPanel runningModules;
+    private String offline;
+    private LiveNetworkFinder finder = name -> org.fdnet.corba.control.RemoteLiveNetwork.attach(name, null);
 
     public HiWindow(RecentFiles recent) {
         super("FDNet editor");
@@ -51,10 +66,12 @@ public final class HiWindow extends JFrame {
         fileMenu = new FileMenu(this);
         editMenu = new EditMenu(this);
         viewMenu = new ViewMenu(this);
+        liveMenu = new LiveMenu(this);
         JMenuBar bar = new JMenuBar();
         bar.add(fileMenu.menu());
         bar.add(editMenu.menu());
         bar.add(viewMenu.menu());
+        bar.add(liveMenu.menu());
         setJMenuBar(bar);
         getContentPane().add(content, BorderLayout.CENTER);
         getContentPane().add(status, BorderLayout.SOUTH);
@@ -85,6 +102,10 @@ public final class HiWindow extends JFrame {
         return status;
     }
 
+    FileMenu fileMenu() {
+        return fileMenu;
+    }
+
     RecentFiles recent() {
         return recent;
     }
@@ -103,12 +124,16 @@ public final class HiWindow extends JFrame {
     }
 
     public void show(OpenNetwork network) {
+        if (live != null) {
+            live.close();
+        }
+        offline = null;
         current = network;
         problems = null;
         problemFile = null;
         canvas = new GraphCanvas(network.scene());
         search = new SearchBar(network.scene(), canvas);
-        NodeInfoPanel info = new NodeInfoPanel(network.scene(), network.editor());
+        info = new NodeInfoPanel(network.scene(), network.editor());
         info.reportTo(status);
         network.editor().addEditorListener(new EditorListener() {
             @Override
@@ -141,7 +166,11 @@ public final class HiWindow extends JFrame {
         JPanel graph = new JPanel(new BorderLayout());
         graph.add(top, BorderLayout.NORTH);
         graph.add(canvas, BorderLayout.CENTER);
-        JScrollPane side = new JScrollPane(info);
+        JPanel sidePanel = new JPanel(new BorderLayout());
+        sidePanel.add(info, BorderLayout.CENTER);
+        liveSlot.removeAll();
+        sidePanel.add(liveSlot, BorderLayout.SOUTH);
+        JScrollPane side = new JScrollPane(sidePanel);
         side.setPreferredSize(new Dimension(320, 400));
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, graph, side);
         split.setResizeWeight(1);
@@ -152,6 +181,9 @@ public final class HiWindow extends JFrame {
     }
 
     public void showProblems(Path file, List<Problem> list) {
+        if (live != null) {
+            live.close();
+        }
         current = null;
         canvas = null;
         search = null;
@@ -176,6 +208,7 @@ public final class HiWindow extends JFrame {
         fileMenu.refresh();
         editMenu.refresh();
         viewMenu.refresh();
+        liveMenu.refresh();
     }
 
     /** Title (with * while unsaved) and the network in numbers. */
@@ -184,7 +217,9 @@ public final class HiWindow extends JFrame {
             return;
         }
         String name = current.file() == null ? "untitled" : current.file().getFileName().toString();
-        setTitle((current.unsaved() ? "*" : "") + name + " — FDNet editor");
+        String state = live == null ? offline == null ? "" : " (" + offline + ")"
+                : live.collecting() ? " (collecting changes for " + live.name() + ")" : " (live: " + live.name() + ")";
+        setTitle((current.unsaved() ? "*" : "") + name + state + " — FDNet editor");
         ModuleCounts t = current.editor().network().totalCounts();
         status.summary(current.editor().network().modules().size() + " modules · " + t.datas() + " Datas · "
                 + t.relations() + " Relations · " + t.readers() + " Readers · " + t.writers() + " Writers");
@@ -215,6 +250,106 @@ public final class HiWindow extends JFrame {
 
     /** The text frames: the Network frame, the Basic and the Advanced Module frame. */
     public enum TextFrame { NETWORK, MODULE, ADVANCED }
+
+    // ---------------------------------------------------------------- live mode
+
+    /** The attachment to a running network, or {@code null} when offline. */
+    public LiveSession live() {
+        return live;
+    }
+
+    /** The running modules of the attached network, or {@code null} when offline. */
+    public RunningModulesPanel runningModules() {
+        return runningModules;
+    }
+
+    /** How Attach and Deploy find a running network by name (default: its control object, on this machine or at HOST:PORT). */
+    public void setFinder(LiveNetworkFinder finder) {
+        this.finder = finder;
+    }
+
+    LiveNetworkFinder finder() {
+        return finder;
+    }
+
+    /**
+     * Attaches the editor to {@code network}. Live: the editor shows the running network (the open one follows it
+     * and keeps its layout when it has the same name; else its snapshot opens, laid out afresh), and every edit
+     * goes there first. Collecting: the editor keeps what it shows, and the difference is pending until deployed.
+     * Returns false (and lets go of the network) when the user would not discard unsaved changes.
+     */
+    public boolean attach(LiveNetwork network, boolean collecting) {
+        if (live != null) {
+            live.close();
+        }
+        try {
+            if (!collecting && (current == null || !java.util.Objects.equals(current.editor().network().name(), network.name())
+                    || current.unsaved())) {
+                if (!mayDiscard()) {
+                    network.close();
+                    return false;
+                }
+                show(OpenNetwork.running(network.snapshot()));
+            }
+            live = LiveSession.attach(network, current.editor(), current.scene(), new LiveView(), collecting);
+        } catch (RuntimeException e) {
+            LOG.warn("attaching to {} failed", network.name(), e);
+            network.close();
+            status.error("Cannot attach to " + network.name() + ": " + e.getMessage());
+            return false;
+        }
+        offline = null;
+        runningModules = new RunningModulesPanel(live, current.editor().network());
+        liveSlot.add(runningModules, BorderLayout.CENTER);
+        liveSlot.revalidate();
+        info.setLive(live);
+        refreshTitle();
+        refreshMenus();
+        status.info((collecting ? "Collecting changes for " : "Attached to ") + network.name()
+                + (collecting ? "; Live → Deploy sends them" : "; every edit goes to the running network first"));
+        return true;
+    }
+
+    /** What the session tells the window: status lines, module states, its end. */
+    private final class LiveView implements LiveSessionListener {
+        @Override
+        public void info(String message) {
+            status.info(message);
+        }
+
+        @Override
+        public void error(String message) {
+            status.error(message);
+        }
+
+        @Override
+        public void modulesChanged(java.util.Set<String> loaded, java.util.Set<String> held) {
+            if (runningModules != null) {
+                runningModules.show(loaded, held);
+            }
+        }
+
+        @Override
+        public void ended(boolean lost, String reason) {
+            live = null;
+            runningModules = null;
+            liveSlot.removeAll();
+            liveSlot.revalidate();
+            liveSlot.repaint();
+            if (info != null) {
+                info.setLive(null);
+            }
+            if (lost) {
+                offline = "offline: " + reason;
+                status.error("The running network is gone (" + reason + "); editing offline with its last state");
+            } else {
+                offline = null;
+                status.info("Detached: " + reason.replaceFirst("^detached from ", "") + " keeps running");
+            }
+            refreshTitle();
+            refreshMenus();
+        }
+    }
 
     Path problemFile() {
         return problemFile;

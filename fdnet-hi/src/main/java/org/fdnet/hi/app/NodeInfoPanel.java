@@ -27,7 +27,9 @@ import org.fdnet.netinfo.Parameter;
 /**
  * The node information panel: what the clicked node is (module, name, kind, host, path, class,
  * parameters), or the clicked Reader/Writer. Host, path, class and parameter values of a node, and the
- * name, ends and exist flag of a Reader/Writer, can be changed here (Apply: one undoable edit).
+ * name, ends and exist flag of a Reader/Writer, can be changed here (Apply: one undoable edit). Attached to a
+ * running network, a Data also has "send a value to the node": the text, in the Data's type, is written into
+ * the running Data.
  */
 public final class NodeInfoPanel extends JPanel implements SceneListener {
     private final GraphScene scene;
@@ -53,6 +55,9 @@ public final class NodeInfoPanel extends JPanel implements SceneListener {
     private final JCheckBox exists = new JCheckBox("made at start (exist)");
     private final JButton apply = new JButton("Apply");
     private final JPanel fields = new JPanel(new GridBagLayout());
+    private final JTextField sendText = editable("info.sendValue");
+    private final JButton send = new JButton("Send");
+    private org.fdnet.hi.live.LiveSession live;
     private int row;
 
     public NodeInfoPanel(GraphScene scene, UndoableNetworkEditor editor) {
@@ -72,6 +77,9 @@ public final class NodeInfoPanel extends JPanel implements SceneListener {
         apply.addActionListener(e -> applyConnection());
         applyNode.setName("info.applyNode");
         applyNode.addActionListener(e -> applyNode());
+        send.setName("info.send");
+        send.addActionListener(e -> sendValue());
+        sendText.addActionListener(e -> sendValue());
         scene.addListener(this);
         selectionChanged();
     }
@@ -125,7 +133,29 @@ public final class NodeInfoPanel extends JPanel implements SceneListener {
         addWide(new JLabel("Parameters"));
         addWide(scroll);
         addWide(applyNode);
+        if (live != null && node.kind() == org.fdnet.netinfo.NodeKind.DATA) {
+            JPanel line = new JPanel(new BorderLayout(4, 0));
+            line.add(sendText, BorderLayout.CENTER);
+            line.add(send, BorderLayout.EAST);
+            addWide(new JLabel("Send a value to the node (" + live.name() + ")"));
+            addWide(line);
+        }
         filler();
+    }
+
+    /** Attached: Datas get the "send a value" field; {@code null}: offline. */
+    public void setLive(org.fdnet.hi.live.LiveSession session) {
+        live = session;
+        selectionChanged();
+    }
+
+    private void sendValue() {
+        if (live == null || scene.selection().size() != 1) {
+            return;
+        }
+        if (live.send(scene.selection().iterator().next(), sendText.getText().trim()).executed()) {
+            sendText.selectAll();
+        }
     }
 
     /** Where a value that does not fit its type is reported. */

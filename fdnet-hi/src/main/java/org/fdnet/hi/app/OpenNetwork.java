@@ -43,6 +43,11 @@ public final class OpenNetwork {
         return new OpenNetwork(null, new NetworkInfo("untitled"), new NetworkLayout(), null, List.of(), null);
     }
 
+    /** A running network's snapshot, not yet saved anywhere; laid out afresh. */
+    public static OpenNetwork running(NetworkInfo snapshot) {
+        return new OpenNetwork(null, snapshot, new NetworkLayout(), null, List.of(), null);
+    }
+
     /**
      * Reads {@code file} and its .fdg. A network with problems throws (the window shows them, read-only);
      * a .fdg with problems is set aside with a warning and the network is laid out afresh.

@@ -9,7 +9,14 @@ import org.fdnet.hi.app.HiApplication;
 import org.fdnet.hi.app.HiWindow;
 import org.fdnet.hi.app.RecentFiles;
 import org.fdnet.hi.app.WindowScreenshot;
+import org.fdnet.control.LiveNetwork;
+import org.fdnet.control.NetworkUnreachableException;
+import org.fdnet.corba.control.RemoteLiveNetwork;
 import org.fdnet.hi.graph.GraphScene;
+import org.fdnet.hi.live.InProcessRun;
+import org.fdnet.hi.live.LiveNetworkFinder;
+import org.fdnet.netinfo.xml.NetworkFileException;
+import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.netinfo.NodeRef;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -21,10 +28,22 @@ import picocli.CommandLine.Model.CommandSpec;
 @Command(name = "hi", mixinStandardHelpOptions = true,
         description = {"The Human Interface: edit a network graphically and in text frames (Swing).",
             "A file with problems opens read-only with its problem list.",
+            "Live: --attach NAME edits a running network (each edit is sent to it first and shown once executed);",
+            "--run starts FILE in this process and attaches to it.",
             "With --screenshot, renders the window to a PNG and exits (needs a display, e.g. xvfb-run)."})
 public final class HiCommand implements Callable<Integer> {
     @Parameters(arity = "0..1", paramLabel = "FILE", description = "the .fdn network to open")
     Path file;
+
+    @Option(names = "--attach", paramLabel = "NAME", description = "attach to the running network published as NAME")
+    String attach;
+
+    @Option(names = "--naming", paramLabel = "CORBALOC",
+            description = "with --attach NAME: the naming service to look NAME up in, when it does not run on this machine")
+    String naming;
+
+    @Option(names = "--run", description = "run FILE in the editor's process and attach to it (stops when the editor closes)")
+    boolean run;
 
     @Option(names = "--screenshot", paramLabel = "PNG", description = "render the window to this PNG and exit")
     Path screenshot;
@@ -63,15 +82,61 @@ public final class HiCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("fdnet hi: no display (DISPLAY is not set); run it under X, or xvfb-run for --screenshot");
             return 2;
         }
+        if (run && file == null) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--run needs the FILE to run");
+        }
+        if (run && attach != null) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), "--run and --attach exclude each other");
+        }
+        InProcessRun started = null;
+        if (run) {
+            try {
+                started = InProcessRun.start(file);
+            } catch (NetworkFileException e) {
+                e.problems().forEach(p -> spec.commandLine().getErr().println(p));
+                return 1;
+            } catch (RuntimeStartException e) {
+                spec.commandLine().getErr().println(file + ": the network cannot start:");
+                e.problems().forEach(p -> spec.commandLine().getErr().println("  " + p));
+                return 1;
+            }
+            spec.commandLine().getOut().println("running " + started.live().name() + " (" + file + ") in the editor's process");
+        }
+        try {
+            return show(started);
+        } finally {
+            if (started != null) {
+                started.close();
+            }
+        }
+    }
+
+    private int show(InProcessRun started) throws Exception {
+        LiveNetwork attached = started == null ? null : started.live();
+        if (attach != null) {
+            try {
+                attached = finder().find(attach);
+            } catch (NetworkUnreachableException e) {
+                spec.commandLine().getErr().println("fdnet hi --attach " + attach + ": " + e.getMessage());
+                return 1;
+            }
+        }
         HiWindow window = HiApplication.start(file, RecentFiles.forUser());
-        SwingUtilities.invokeAndWait(() -> window.setSize(parseSize()));
+        LiveNetwork network = attached;
+        SwingUtilities.invokeAndWait(() -> {
+            window.setSize(parseSize());
+            window.setFinder(finder());
+            if (network != null) {
+                window.attach(network, false);
+            }
+        });
         Thread.sleep(400);
         SwingUtilities.invokeAndWait(() -> prepare(window));
         if (screenshot == null) {
             HiApplication.awaitClosed(window);
             return 0;
         }
-        Thread.sleep(300);
+        Thread.sleep(started != null || attach != null ? 1500 : 300); // live: let values arrive and be drawn
         Exception[] failure = new Exception[1];
         SwingUtilities.invokeAndWait(() -> {
             try {
@@ -90,6 +155,12 @@ public final class HiCommand implements Callable<Integer> {
         }
         spec.commandLine().getOut().println("wrote " + screenshot);
         return 0;
+    }
+
+    /** How {@code --attach} and the editor's Live menu find a running network: by name, HOST:PORT or corbaloc. */
+    private LiveNetworkFinder finder() {
+        String namingService = naming;
+        return name -> RemoteLiveNetwork.attach(name, namingService);
     }
 
     private java.awt.Dimension parseSize() {

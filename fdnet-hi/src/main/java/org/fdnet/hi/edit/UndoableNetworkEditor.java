@@ -11,6 +11,8 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.Parameter;
+import org.fdnet.runtime.ChangeOutcome;
+import org.fdnet.runtime.NetworkEdit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -19,6 +21,10 @@ import org.slf4j.LoggerFactory;
  * whose inverse goes on the undo stack (inverse edits, never a copy of the whole model). A refusal changes
  * nothing, is returned as {@link EditResult#refused} and told to the {@link EditorListener}s (the status bar).
  * Swing thread only, like the NetworkInfo it edits.
+ *
+ * <p>With an {@link EditGate} set (live mode), every edit, undo and redo is first tried on a copy and the
+ * result handed to the gate; only when the gate answers executed is it applied here. Changes that come from
+ * elsewhere (the running network reshaping itself) enter through {@link #adopt}, outside the history.
  */
 public final class UndoableNetworkEditor implements NetworkEditor {
     private static final Logger LOG = LoggerFactory.getLogger(UndoableNetworkEditor.class);
@@ -26,6 +32,7 @@ public final class UndoableNetworkEditor implements NetworkEditor {
     private final EditTarget target;
     private final EditHistory history = new EditHistory();
     private final List<EditorListener> listeners = new CopyOnWriteArrayList<>();
+    private EditGate gate;
 
     public UndoableNetworkEditor(NetworkInfo network, NetworkLayout layout) {
         this.target = new EditTarget(Objects.requireNonNull(network), Objects.requireNonNull(layout));
@@ -39,6 +46,26 @@ public final class UndoableNetworkEditor implements NetworkEditor {
     /** The view state edited alongside the network (renames carry positions and colours). */
     public NetworkLayout layout() {
         return target.layout();
+    }
+
+    /** Every later edit, undo and redo goes through {@code gate} first; {@code null}: edits apply at once. */
+    public void setGate(EditGate gate) {
+        this.gate = gate;
+    }
+
+    public EditGate gate() {
+        return gate;
+    }
+
+    /**
+     * Makes a change that happened elsewhere (the running network changed itself, or executed another tool's
+     * edit): applied as is, not through the gate, not undoable, not marking the file unsaved. The change is tried
+     * on a copy first, so one that does not fit changes nothing and throws {@link EditRefusedException}.
+     */
+    public void adopt(NetworkEdit change) {
+        change.applyTo(network().copy());
+        change.applyTo(network());
+        fireHistory();
     }
 
     public void addEditorListener(EditorListener listener) {
@@ -84,7 +111,7 @@ public final class UndoableNetworkEditor implements NetworkEditor {
             return refuse("nothing to undo");
         }
         try {
-            history.pushRedo(new EditHistory.Step(step.id(), step.label(), step.edit().applyTo(target)));
+            history.pushRedo(new EditHistory.Step(step.id(), step.label(), gated("Undo " + step.label(), step.edit())));
         } catch (EditRefusedException | IllegalArgumentException e) {
             history.pushUndo(step);
             return refuse("cannot undo " + step.label() + ": " + e.getMessage());
@@ -99,7 +126,7 @@ public final class UndoableNetworkEditor implements NetworkEditor {
             return refuse("nothing to redo");
         }
         try {
-            history.pushUndo(new EditHistory.Step(step.id(), step.label(), step.edit().applyTo(target)));
+            history.pushUndo(new EditHistory.Step(step.id(), step.label(), gated("Redo " + step.label(), step.edit())));
         } catch (EditRefusedException | IllegalArgumentException e) {
             history.pushRedo(step);
             return refuse("cannot redo " + step.label() + ": " + e.getMessage());
@@ -200,13 +227,31 @@ public final class UndoableNetworkEditor implements NetworkEditor {
     private EditResult apply(String label, ReversibleEdit edit, NodeRef produced) {
         ReversibleEdit inverse;
         try {
-            inverse = edit.applyTo(target);
+            inverse = gated(label, edit);
         } catch (EditRefusedException | IllegalArgumentException e) {
             return refuse(e.getMessage());
         }
         history.done(label, inverse);
         fireHistory();
         return produced == null ? EditResult.ok() : EditResult.ok(produced);
+    }
+
+    /**
+     * Applies {@code edit} here, asking the gate first (when there is one) with the network the edit would
+     * make; returns the inverse. Throws {@link EditRefusedException} with the gate's reason, changing nothing.
+     */
+    private ReversibleEdit gated(String label, ReversibleEdit edit) {
+        if (gate != null) {
+            EditTarget trial = new EditTarget(network().copy(), new NetworkLayout());
+            edit.applyTo(trial);
+            if (!trial.network().equals(network())) {
+                ChangeOutcome outcome = gate.admit(label, network().copy(), trial.network());
+                if (!outcome.executed()) {
+                    throw new EditRefusedException("the running network refused it: " + outcome.reason());
+                }
+            }
+        }
+        return edit.applyTo(target);
     }
 
     private EditResult refuse(String reason) {

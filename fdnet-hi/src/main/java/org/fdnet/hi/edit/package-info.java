@@ -11,7 +11,10 @@
  * <p>{@link org.fdnet.hi.edit.UndoableNetworkEditor} implements the door. Each call builds a
  * {@link org.fdnet.hi.edit.ReversibleEdit}; applying it to the network returns its inverse (deleteNode's
  * inverse re-adds the node and each of its connections at their places), which goes on the undo stack of
- * {@link org.fdnet.hi.edit.EditHistory}; applying an inverse returns the redo. No step copies the model.
+ * {@link org.fdnet.hi.edit.EditHistory}; applying an inverse returns the redo. No step copies the model —
+ * except in live mode, where an {@link org.fdnet.hi.edit.EditGate} is set: each edit, undo and redo is first tried
+ * on a copy, the gate sends the result to the running network, and only an executed change is applied here.
+ * Changes the running network made by itself come in through {@code adopt}, outside the history.
  *
  * <pre>
  *  editor.deleteNode(r) ─▶ NodeEdits.delete(r).applyTo(target) ─▶ NetworkInfo.deleteNode(r)

@@ -137,6 +137,11 @@ public final class GraphCanvas extends JComponent implements SceneListener {
         repaint();
     }
 
+    @Override
+    public void valuesChanged() {
+        repaint();
+    }
+
     Point2D toModel(Point p) {
         return inverse(transform()).transform(p, null);
     }

@@ -14,7 +14,7 @@ import org.fdnet.netinfo.NodeRef;
 /**
  * Paints a {@link GraphScene} on a {@link Sketch}, in model coordinates: connections first (Readers grey,
  * Writers dark, not-made ones dashed, names at the middle), then nodes (Datas as ovals, Relations as boxes)
- * with their names. The selection is outlined blue; when relatives are highlighted, the others fade.
+ * with their names and, in live mode, a Data's latest value in green under it. The selection is outlined blue; when relatives are highlighted, the others fade.
  */
 public final class GraphPainter {
     private static final Color READER = new Color(0x8A9099);
@@ -22,6 +22,7 @@ public final class GraphPainter {
     private static final Color SELECTED = new Color(0x1F6FEB);
     private static final Color HIGHLIGHT = new Color(0xF0A020);
     private static final Color TEXT = new Color(0x1E2430);
+    private static final Color LIVE_VALUE = new Color(0x0B7A3E);
 
     /** Names are 12 model units high: below this scale they would be under 5 pixels. */
     static final double LABEL_SCALE = 0.42;
@@ -95,6 +96,10 @@ public final class GraphPainter {
         Color text = luminance(scene.fillColour(ref)) < 0.5 ? Color.WHITE : TEXT;
         sketch.text(ref.node(), b.getCenterX(), b.getCenterY(), faded ? fade(text) : text,
                 node.kind() == org.fdnet.netinfo.NodeKind.RELATION);
+        String live = scene.liveValue(ref);
+        if (live != null) {
+            sketch.text(live, b.getCenterX(), b.getMaxY() + 9, faded ? fade(LIVE_VALUE) : LIVE_VALUE, false);
+        }
     }
 
     private static Shape arrowHead(Line2D s, double length) {

@@ -44,6 +44,7 @@ public final class GraphScene {
     private final Set<NodeRef> highlighted = new LinkedHashSet<>();
     private NodeRef highlightRoot;
     private boolean layoutChanged;
+    private Map<NodeRef, String> liveValues = Map.of();
 
     public GraphScene(UndoableNetworkEditor editor) {
         this.editor = editor;
@@ -291,6 +292,44 @@ public final class GraphScene {
 
     public void markLayoutSaved() {
         layoutChanged = false;
+    }
+
+    // ---------------------------------------------------------------- live values (live mode; never saved)
+
+    /** The latest value of each running Data that has one, as drawn under its node; {@code null} if none. */
+    public String liveValue(NodeRef ref) {
+        return liveValues.get(ref);
+    }
+
+    /** Replaces the values of the Datas in {@code latest}, keeping the others'; only the canvas repaints. */
+    public void showLiveValues(Map<NodeRef, String> latest) {
+        Map<NodeRef, String> merged = new HashMap<>(liveValues);
+        merged.putAll(latest);
+        liveValues = merged;
+        fireValues();
+    }
+
+    /** Drops the values of Datas outside {@code modules} (an unloaded module's Datas have none). */
+    public void keepLiveValuesOf(Set<String> modules) {
+        if (liveValues.keySet().stream().allMatch(r -> modules.contains(r.module()))) {
+            return;
+        }
+        Map<NodeRef, String> kept = new HashMap<>(liveValues);
+        kept.keySet().removeIf(r -> !modules.contains(r.module()));
+        liveValues = kept;
+        fireValues();
+    }
+
+    /** Detached: no live values any more. */
+    public void clearLiveValues() {
+        liveValues = Map.of();
+        fireValues();
+    }
+
+    private void fireValues() {
+        for (SceneListener l : listeners) {
+            l.valuesChanged();
+        }
     }
 
     // ---------------------------------------------------------------- selection and highlight

@@ -7,4 +7,8 @@ public interface SceneListener {
 
     /** The selected nodes or connection changed. */
     void selectionChanged();
+
+    /** The live values drawn on the nodes changed (live mode); only the canvas cares. */
+    default void valuesChanged() {
+    }
 }

@@ -230,4 +230,84 @@ class UndoableNetworkEditorTest {
             }
         }
     }
+
+    // ---------------------------------------------------------------- live mode: the gate decides first
+
+    /** A gate that records what it was asked and answers as told (the running network's part, in one line). */
+    private static final class RecordingGate implements EditGate {
+        final List<String> asked = new ArrayList<>();
+        String refuseWith;
+
+        @Override
+        public org.fdnet.runtime.ChangeOutcome admit(String label, NetworkInfo before, NetworkInfo after) {
+            asked.add(label + ": " + org.fdnet.control.NetworkDiff.between(before, after).entries());
+            return refuseWith == null ? org.fdnet.runtime.ChangeOutcome.executed(label)
+                    : org.fdnet.runtime.ChangeOutcome.failed(label, refuseWith);
+        }
+    }
+
+    @Test
+    void shouldAskTheGateWithTheEditedNetworkBeforeChangingAnything() {
+        RecordingGate gate = new RecordingGate();
+        editor.setGate(gate);
+
+        EditResult result = editor.deleteNode(JUDGE);
+
+        assertThat(result.accepted()).isTrue();
+        assertThat(network.node(JUDGE)).isNull();
+        assertThat(gate.asked).hasSize(1);
+        assertThat(gate.asked.get(0)).startsWith("Delete node Integration/judge: ").contains("- node Integration/judge");
+    }
+
+    @Test
+    void shouldChangeNothingAndSayWhyWhenTheGateRefuses() {
+        RecordingGate gate = new RecordingGate();
+        gate.refuseWith = "class not found";
+        editor.setGate(gate);
+        NetworkInfo before = network.copy();
+
+        EditResult result = editor.renameNode(JUDGE, "arbiter");
+
+        assertThat(result.accepted()).isFalse();
+        assertThat(result.reason()).isEqualTo("the running network refused it: class not found");
+        assertThat(refusals).containsExactly(result.reason());
+        assertThat(network).isEqualTo(before);
+        assertThat(editor.canUndo()).isFalse();
+    }
+
+    @Test
+    void shouldSendUndoAndRedoThroughTheGateAndKeepTheStepWhenRefused() {
+        RecordingGate gate = new RecordingGate();
+        editor.setGate(gate);
+        editor.deleteNode(JUDGE);
+        NetworkInfo deleted = network.copy();
+
+        gate.refuseWith = "the network is busy";
+        assertThat(editor.undo().accepted()).isFalse();
+        assertThat(network).isEqualTo(deleted);
+        assertThat(editor.canUndo()).as("the step stays to be tried again").isTrue();
+
+        gate.refuseWith = null;
+        assertThat(editor.undo().accepted()).isTrue();
+        assertThat(network.node(JUDGE)).isNotNull();
+        assertThat(editor.redo().accepted()).isTrue();
+        assertThat(gate.asked).extracting(a -> a.substring(0, a.indexOf(':')))
+                .containsExactly("Delete node Integration/judge", "Undo Delete node Integration/judge",
+                        "Undo Delete node Integration/judge", "Redo Delete node Integration/judge");
+    }
+
+    @Test
+    void shouldAdoptAChangeFromElsewhereWithoutTheGateTheHistoryOrTheDirtyMark() {
+        RecordingGate gate = new RecordingGate();
+        editor.setGate(gate);
+        NetworkInfo running = network.copy();
+        running.addNode("main", NodeInfo.data("built by a Servant", "org.fdnet.runtime.library.DoubleData"));
+
+        editor.adopt(org.fdnet.control.NetworkDiff.between(network, running).asEdit());
+
+        assertThat(network).isEqualTo(running);
+        assertThat(gate.asked).isEmpty();
+        assertThat(editor.canUndo()).isFalse();
+        assertThat(editor.dirty()).isFalse();
+    }
 }

@@ -33,7 +33,12 @@ import org.fdnet.runtime.RuntimeOptions;
 import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.runtime.Value;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
+import org.fdnet.control.LocalLiveNetwork;
+import org.fdnet.corba.cli.ControlOptions;
+import org.fdnet.corba.control.ControlPublication;
+import org.fdnet.runtime.cli.RunCommand;
 
 /**
  * {@code fdnet demo}: a RoQ network (default networks/roq-walk.fdn) on the real-time simulator, joined by the
@@ -76,6 +81,20 @@ public final class DemoCommand implements Callable<Integer> {
             description = "at the end, render the demo window (robot, terrain, path, live figures) to this PNG;"
                     + " works without --gui too (drawn off-screen)")
     Path screenshot;
+
+    @Mixin
+    ControlOptions control;
+
+    /** The network's control object, for {@code fdnet control} and the editor's {@code --attach}; null without one. */
+    private ControlPublication publishControl(RuntimeNetwork net, NetworkInfo definition) {
+        try {
+            return control.publish(new LocalLiveNetwork(RunCommand.publishedName(definition, network), net.controller()),
+                    new java.io.PrintWriter(System.out, true));
+        } catch (IllegalArgumentException e) {
+            System.err.println("fdnet demo: the control object is not published: " + e.getMessage());
+            return null;
+        }
+    }
 
     @Override
     public Integer call() throws Exception {
@@ -150,7 +169,8 @@ public final class DemoCommand implements Callable<Integer> {
         RoqDemoWindow window = null;
         try (RoqSimulator sim = RoqSimulator.open(c, simOptions);
              RuntimeNetwork net = RuntimeNetwork.start(definition, RuntimeOptions.defaults().sink(meter));
-             SimBridge bridge = SimBridge.realTime(net, sim)) {
+             SimBridge bridge = SimBridge.realTime(net, sim);
+             ControlPublication published = publishControl(net, definition)) {
             meter.lookUpCounters(net);
             sim.read(s);
             startX = s.groundTruthBodyPosition(0);

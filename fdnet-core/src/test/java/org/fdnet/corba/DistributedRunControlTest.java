@@ -1,0 +1,121 @@
+package org.fdnet.corba;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import org.fdnet.control.LiveNetworkListener;
+import org.fdnet.corba.control.RemoteLiveNetwork;
+import org.fdnet.corba.control.RunFiles;
+import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.ChangeOutcome;
+import org.fdnet.runtime.Value;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * A distributed run registers its control object in its naming service under the network's name: a tool finds it
+ * there, holds and resumes a module on every host through it, hears the changes and the hosts' values, and is told
+ * when the run stops.
+ */
+@Timeout(value = 180, unit = TimeUnit.SECONDS)
+class DistributedRunControlTest {
+    private static final NodeRef MAP = new NodeRef("main", "Map");
+
+    @TempDir
+    Path noRunFiles;
+
+    private CorbaCluster cluster;
+    private FdnetChildProcess run;
+    private RemoteLiveNetwork network;
+
+    @AfterEach
+    void stop() {
+        System.clearProperty(RunFiles.FOLDER_PROPERTY);
+        if (network != null) {
+            network.close();
+        }
+        if (run != null) {
+            run.close();
+        }
+        if (cluster != null) {
+            cluster.close();
+        }
+    }
+
+    @Test
+    void shouldBeFoundInTheNamingServiceAndHoldAModuleOnEveryHost() throws Exception {
+        cluster = CorbaCluster.start();
+        cluster.startHost("flyer");
+        cluster.startHost("crawler");
+        run = FdnetChildProcess.start("run two-robots", List.of("run", "../networks/two-robots.fdn", "--naming",
+                cluster.corbaloc(), "--as", "operator-station", "--for", "150s"), "control object of", 60_000);
+        // this JVM sees no ~/.fdnet/run files: the name must come from the naming service
+        System.setProperty(RunFiles.FOLDER_PROPERTY, noRunFiles.toString());
+
+        network = RemoteLiveNetwork.attach("two-robots", cluster.corbaloc());
+
+        assertThat(network.name()).isEqualTo("two-robots");
+        assertThat(network.snapshot().node(new NodeRef("main", "ChooseSector"))).isNotNull();
+        Heard heard = new Heard();
+        network.subscribe(heard);
+        assertThat(heard.sampleWith(MAP)).as("the flyer's Map, read from its host").isTrue();
+
+        ChangeOutcome held = network.hold("main");
+        assertThat(held.executed()).as(held.toString()).isTrue();
+        assertThat(held.description()).contains("flyer", "crawler", "operator-station");
+        assertThat(network.heldModules()).containsExactly("main");
+        assertThat(heard.changes.poll(15, TimeUnit.SECONDS)).isEqualTo(held);
+        assertThat(network.resume("main").executed()).isTrue();
+        ChangeOutcome load = network.load("Nothing");
+        assertThat(load.executed()).isFalse();
+        assertThat(load.reason()).contains("not supported");
+
+        run.close();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(15);
+        while (heard.disconnects.isEmpty() && System.nanoTime() < deadline) {
+            Thread.sleep(50);
+        }
+        assertThat(heard.disconnects).hasSize(1);
+        assertThat(heard.disconnects.get(0)).contains("two-robots");
+    }
+
+    static final class Heard implements LiveNetworkListener {
+        final BlockingQueue<ChangeOutcome> changes = new LinkedBlockingQueue<>();
+        final BlockingQueue<Map<NodeRef, Value>> samples = new LinkedBlockingQueue<>();
+        final List<String> disconnects = new CopyOnWriteArrayList<>();
+
+        @Override
+        public void changeSettled(ChangeOutcome outcome) {
+            changes.add(outcome);
+        }
+
+        @Override
+        public void valuesSampled(Map<NodeRef, Value> latest) {
+            samples.add(latest);
+        }
+
+        @Override
+        public void disconnected(String reason) {
+            disconnects.add(reason);
+        }
+
+        boolean sampleWith(NodeRef data) throws InterruptedException {
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(15);
+            while (System.nanoTime() < deadline) {
+                Map<NodeRef, Value> s = samples.poll(100, TimeUnit.MILLISECONDS);
+                if (s != null && s.containsKey(data)) {
+                    return true;
+                }
+            }
+            return false;
+        }
+    }
+}

@@ -1,0 +1,132 @@
+package org.fdnet.corba.control;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import org.fdnet.control.LiveNetworkListener;
+import org.fdnet.control.LocalLiveNetwork;
+import org.fdnet.control.NetworkUnreachableException;
+import org.fdnet.netinfo.ConnectionInfo;
+import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.netinfo.NodeInfo;
+import org.fdnet.netinfo.NodeRef;
+import org.fdnet.netinfo.Parameter;
+import org.fdnet.runtime.ChangeOutcome;
+import org.fdnet.runtime.RuntimeNetwork;
+import org.fdnet.runtime.RuntimeOptions;
+import org.fdnet.runtime.Value;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The control object and its client in one JVM (two ORBs): the mapping of every call, without process start-up. */
+@Timeout(60)
+class ControlObjectInProcessTest {
+    private static final String LIB = "org.fdnet.runtime.library.";
+
+    @TempDir
+    Path runDir;
+
+    @BeforeEach
+    void privateRunFolder() {
+        System.setProperty(RunFiles.FOLDER_PROPERTY, runDir.toString());
+    }
+
+    @AfterEach
+    void defaultRunFolder() {
+        System.clearProperty(RunFiles.FOLDER_PROPERTY);
+    }
+
+    static NodeRef ref(String text) {
+        return NodeRef.parse(text, "main");
+    }
+
+    static NetworkInfo network() {
+        NetworkInfo n = new NetworkInfo("in-process");
+        n.addNode("main", NodeInfo.data("In", LIB + "DoubleData"));
+        n.addNode("main", NodeInfo.data("Out", LIB + "DoubleData"));
+        n.addNode("main", NodeInfo.relation("Gain", LIB + "Expression", Parameter.named("expression", "2 * in0")));
+        n.addConnection("main", ConnectionInfo.reader(ref("In"), ref("Gain")));
+        n.addConnection("main", ConnectionInfo.writer(ref("Gain"), ref("Out")));
+        return n;
+    }
+
+    static final class Heard implements LiveNetworkListener {
+        final BlockingQueue<ChangeOutcome> changes = new LinkedBlockingQueue<>();
+        final BlockingQueue<Map<NodeRef, Value>> samples = new LinkedBlockingQueue<>();
+        final List<String> disconnects = new CopyOnWriteArrayList<>();
+
+        @Override
+        public void changeSettled(ChangeOutcome outcome) {
+            changes.add(outcome);
+        }
+
+        @Override
+        public void valuesSampled(Map<NodeRef, Value> latest) {
+            samples.add(latest);
+        }
+
+        @Override
+        public void disconnected(String reason) {
+            disconnects.add(reason);
+        }
+    }
+
+    @Test
+    void shouldCarryEveryCallAndEveryNotificationThroughCorba() throws Exception {
+        try (RuntimeNetwork net = RuntimeNetwork.start(network(), RuntimeOptions.defaults().workerThreads(1))) {
+            LocalLiveNetwork local = new LocalLiveNetwork("in-process", net.controller());
+            ControlPublication published = ControlPublication.atPort(local, "127.0.0.1", 0);
+            try (RemoteLiveNetwork remote = RemoteLiveNetwork.attach("in-process", null)) {
+                assertThat(remote.name()).isEqualTo("in-process");
+                assertThat(remote.snapshot()).isEqualTo(net.controller().snapshot());
+                Heard heard = new Heard();
+                remote.subscribe(heard);
+
+                assertThat(remote.send(ref("In"), "4").executed()).isTrue();
+                Map<NodeRef, Value> sample = null;
+                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+                while (System.nanoTime() < deadline && (sample == null || !sample.containsKey(ref("Out"))
+                        || sample.get(ref("Out")).asDouble() != 8.0)) {
+                    sample = heard.samples.poll(200, TimeUnit.MILLISECONDS);
+                }
+                assertThat(sample).isNotNull();
+                assertThat(sample.get(ref("Out")).asDouble()).isEqualTo(8.0);
+
+                ChangeOutcome set = remote.setParameter(ref("Gain"), "expression", "3 * in0");
+                assertThat(set.executed()).as(set.toString()).isTrue();
+                assertThat(heard.changes.poll(10, TimeUnit.SECONDS)).isEqualTo(set);
+                ChangeOutcome bad = remote.hold("NoSuchModule");
+                assertThat(bad.executed()).isFalse();
+                assertThat(bad.reason()).contains("NoSuchModule");
+
+                published.close("the test stopped it");
+                deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+                while (heard.disconnects.isEmpty() && System.nanoTime() < deadline) {
+                    Thread.sleep(20);
+                }
+                assertThat(heard.disconnects).containsExactly("the test stopped it");
+                assertThat(remote.hold("main").reason()).contains("in-process");
+                assertThatThrownBy(remote::snapshot).isInstanceOf(NetworkUnreachableException.class);
+            } finally {
+                published.close();
+            }
+        }
+    }
+
+    @Test
+    void shouldSayNoNetworkOfThatNameRunsHere() {
+        assertThatThrownBy(() -> RemoteLiveNetwork.attach("nobody-runs-this", null))
+                .isInstanceOf(NetworkUnreachableException.class)
+                .hasMessageContaining("no network named 'nobody-runs-this' runs on this machine");
+    }
+}

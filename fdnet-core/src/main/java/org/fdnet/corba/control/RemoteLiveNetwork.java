@@ -64,6 +64,7 @@ public final class RemoteLiveNetwork implements LiveNetwork {
     private final List<ListenerServant> listeners = new CopyOnWriteArrayList<>();
     private final ScheduledExecutorService watchdog;
     private volatile String unreachable;
+    private final AtomicBoolean watching = new AtomicBoolean();
 
     private RemoteLiveNetwork(OrbRuntime orb, RunningNetwork remote, String address, String name, long incarnation) {
         this.orb = orb;
@@ -271,7 +272,7 @@ public final class RemoteLiveNetwork implements LiveNetwork {
             return () -> { };
         }
         listeners.add(servant);
-        if (listeners.size() == 1) {
+        if (watching.compareAndSet(false, true)) {
             startWatching();
         }
         return () -> end(servant, true);

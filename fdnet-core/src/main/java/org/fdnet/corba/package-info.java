@@ -42,6 +42,8 @@
  *                                                   DistributedControl ─prepareShareChange─▶ every host it touches
  *                                                   all ""? close links ─commitChange─▶ each ─▶ acceptLink/forward
  * </pre>
+ * The run's control object (a running network reachable from tools: {@code fdnet control}, the editor's
+ * {@code --attach}) is in {@code org.fdnet.corba.control}.
  * Logging: every host records its engine's events with the logger through its own LoggerClient
  * ({@code fdnet host --logger}, or the address {@code useLogger} hands over at deployment).
  */

@@ -12,6 +12,7 @@ import java.util.concurrent.TimeUnit;
 import org.fdnet.control.LiveNetworkListener;
 import org.fdnet.corba.control.RemoteLiveNetwork;
 import org.fdnet.corba.control.RunFiles;
+import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.Value;
@@ -76,7 +77,16 @@ class DistributedRunControlTest {
         assertThat(network.resume("main").executed()).isTrue();
         ChangeOutcome load = network.load("Nothing");
         assertThat(load.executed()).isFalse();
-        assertThat(load.reason()).contains("not supported");
+        assertThat(load.reason()).contains("no module named 'Nothing'");
+
+        NetworkInfo base = network.snapshot();
+        NetworkInfo edited = base.copy();
+        edited.addModule("Spare", false);
+        ChangeOutcome added = network.apply("add module Spare", base, edited);
+        assertThat(added.executed()).as(added.toString()).isTrue();
+        assertThat(network.snapshot().module("Spare")).as("the edit is in the running definition").isNotNull();
+        ChangeOutcome stale = network.apply("add module Spare again", base, edited);
+        assertThat(stale.executed()).as("the network already has what the stale edit adds").isFalse();
 
         run.close();
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(15);

@@ -64,6 +64,7 @@ public final class RemoteLiveNetwork implements LiveNetwork {
     private final List<ListenerServant> listeners = new CopyOnWriteArrayList<>();
     private final ScheduledExecutorService watchdog;
     private volatile String unreachable;
+    private final AtomicBoolean watching = new AtomicBoolean();
 
     private RemoteLiveNetwork(OrbRuntime orb, RunningNetwork remote, String address, String name, long incarnation) {
         this.orb = orb;
@@ -87,7 +88,9 @@ public final class RemoteLiveNetwork implements LiveNetwork {
      */
     public static RemoteLiveNetwork attach(String target, String namingCorbaloc) {
         Objects.requireNonNull(target, "target");
-        OrbSettings settings = OrbSettings.defaults().withCallTimeoutMillis(CALL_TIMEOUT_MILLIS);
+        OrbSettings settings = OrbSettings.defaults().withCallTimeoutMillis(CALL_TIMEOUT_MILLIS)
+                .withBindAddress(callbackAddress(target.matches(".+:[0-9]{1,5}") && !target.startsWith("corba")
+                        ? "corbaloc::" + target : target.startsWith("corbaloc:") ? target : namingCorbaloc));
         if (namingCorbaloc != null) {
             settings = settings.withNaming(namingCorbaloc);
         }
@@ -109,6 +112,32 @@ public final class RemoteLiveNetwork implements LiveNetwork {
         } catch (RuntimeException e) {
             orb.close();
             throw e;
+        }
+    }
+
+    /**
+     * The address this process's listeners are reached at: 127.0.0.1 for a network on this machine, else the local
+     * address of a connection to the network's host (the network calls its subscribers back).
+     */
+    static String callbackAddress(String corbaloc) {
+        java.util.regex.Matcher m = corbaloc == null ? null
+                : java.util.regex.Pattern.compile("corbaloc:(?:iiop)?:(?:[0-9.]+@)?([^:/]+):([0-9]+)").matcher(corbaloc);
+        if (m == null || !m.find()) {
+            return OrbSettings.LOOPBACK;
+        }
+        String host = m.group(1);
+        try {
+            java.net.InetAddress address = java.net.InetAddress.getByName(host);
+            if (address.isLoopbackAddress()) {
+                return OrbSettings.LOOPBACK;
+            }
+            try (java.net.Socket probe = new java.net.Socket()) {
+                probe.connect(new java.net.InetSocketAddress(address, Integer.parseInt(m.group(2))), 2_000);
+                return probe.getLocalAddress().getHostAddress();
+            }
+        } catch (java.io.IOException | NumberFormatException e) {
+            LOG.debug("no route to {} ({}); listening on 127.0.0.1", host, e.toString());
+            return OrbSettings.LOOPBACK;
         }
     }
 
@@ -243,7 +272,7 @@ public final class RemoteLiveNetwork implements LiveNetwork {
             return () -> { };
         }
         listeners.add(servant);
-        if (listeners.size() == 1) {
+        if (watching.compareAndSet(false, true)) {
             startWatching();
         }
         return () -> end(servant, true);

@@ -129,4 +129,11 @@ class ControlObjectInProcessTest {
                 .isInstanceOf(NetworkUnreachableException.class)
                 .hasMessageContaining("no network named 'nobody-runs-this' runs on this machine");
     }
+
+    @Test
+    void shouldListenForCallbacksOnLoopbackForANetworkOnThisMachine() {
+        assertThat(RemoteLiveNetwork.callbackAddress("corbaloc::127.0.0.1:2809/FDNetControl")).isEqualTo("127.0.0.1");
+        assertThat(RemoteLiveNetwork.callbackAddress("corbaloc:iiop:localhost:2809/NameService")).isEqualTo("127.0.0.1");
+        assertThat(RemoteLiveNetwork.callbackAddress(null)).isEqualTo("127.0.0.1");
+    }
 }

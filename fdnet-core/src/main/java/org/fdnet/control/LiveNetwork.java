@@ -1,5 +1,6 @@
 package org.fdnet.control;
 
+import java.util.Optional;
 import java.util.Set;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.runtime.ChangeOutcome;
@@ -30,6 +31,15 @@ public interface LiveNetwork extends NetworkControl, AutoCloseable {
      * are kept; a difference that no longer fits them is refused with the reason.
      */
     ChangeOutcome apply(String description, NetworkInfo base, NetworkInfo edited);
+
+    /**
+     * Where viewers reach the logger that records this run ({@code HOST:PORT} of its viewer service), when the run
+     * knows it: {@code fdnet demo} with its embedded logger, {@code fdnet run --logger-viewer}. Empty otherwise (the
+     * logger protocol does not tell a core its viewer port).
+     */
+    default Optional<String> loggerViewerAddress() {
+        return Optional.empty();
+    }
 
     /** Subscribes to settled changes and to sampled live values; close the handle to stop. */
     AutoCloseable subscribe(LiveNetworkListener listener);

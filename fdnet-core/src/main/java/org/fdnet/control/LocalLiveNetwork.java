@@ -3,6 +3,7 @@ package org.fdnet.control;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.fdnet.netinfo.ModuleInfo;
@@ -55,9 +56,22 @@ public final class LocalLiveNetwork implements LiveNetwork {
         }
     };
 
+    private final Optional<String> loggerViewerAddress;
+
     public LocalLiveNetwork(String name, Controller controller) {
+        this(name, controller, Optional.empty());
+    }
+
+    /** {@code loggerViewerAddress}: {@code HOST:PORT} of the viewer service of the logger recording this run, if known. */
+    public LocalLiveNetwork(String name, Controller controller, Optional<String> loggerViewerAddress) {
         this.name = Objects.requireNonNull(name, "name");
         this.controller = Objects.requireNonNull(controller, "controller");
+        this.loggerViewerAddress = Objects.requireNonNull(loggerViewerAddress, "loggerViewerAddress");
+    }
+
+    @Override
+    public Optional<String> loggerViewerAddress() {
+        return loggerViewerAddress;
     }
 
     @Override

@@ -42,9 +42,16 @@ public final class FdnetChildProcess implements AutoCloseable {
      * @throws IllegalStateException with the child's output when it exits or is not ready in time
      */
     public static FdnetChildProcess start(String label, List<String> fdnetArgs, String readyMarker, long timeoutMillis) {
+        return start(label, List.of(), fdnetArgs, readyMarker, timeoutMillis);
+    }
+
+    /** As above, the JVM started with {@code jvmOptions} too (e.g. {@code -Duser.home=DIR} for a home of its own). */
+    public static FdnetChildProcess start(String label, List<String> jvmOptions, List<String> fdnetArgs,
+                                          String readyMarker, long timeoutMillis) {
         List<String> command = new ArrayList<>();
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         command.add("-Xss1m");
+        command.addAll(jvmOptions);
         command.add("-cp");
         command.add(System.getProperty("java.class.path"));
         command.add("org.fdnet.cli.FdnetCommand");

@@ -5,6 +5,7 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.Executors;
@@ -187,6 +188,13 @@ public final class RemoteLiveNetwork implements LiveNetwork {
             throw new IllegalStateException("network " + name + " at " + address + " sent a snapshot that is not a"
                     + " valid network: " + e.getMessage(), e);
         }
+    }
+
+    /** Asked of the run each time (empty when it does not know its logger's viewer address). */
+    @Override
+    public Optional<String> loggerViewerAddress() {
+        String text = query(remote::loggerViewerAddress);
+        return text.isBlank() ? Optional.empty() : Optional.of(text);
     }
 
     @Override

@@ -49,6 +49,11 @@ public final class RunningNetworkImpl extends RunningNetworkPOA {
     }
 
     @Override
+    public String loggerViewerAddress() {
+        return network.loggerViewerAddress().orElse("");
+    }
+
+    @Override
     public long ping() {
         return incarnation;
     }

@@ -92,6 +92,11 @@ public final class RunCommand implements Callable<Integer> {
                     + " while it is slow or away events wait in memory and a bounded disk journal")
     String logger;
 
+    @Option(names = "--logger-viewer", paramLabel = "HOST:PORT",
+            description = "the viewer port of that logger (fdnet logger prints it; default port 5556): tools attached"
+                    + " to this run (fdnet hi --attach) plot from it without asking; the logger protocol does not tell it")
+    String loggerViewer;
+
     @Mixin
     DistributionOptions distribution;
 
@@ -114,6 +119,11 @@ public final class RunCommand implements Callable<Integer> {
             return 1;
         }
         EventCounter counter = new EventCounter();
+        if (loggerViewer != null && !loggerViewer.matches("[^:\\s]+:[0-9]{1,5}")) {
+            err.println("--logger-viewer " + loggerViewer + ": expected HOST:PORT, e.g. 127.0.0.1:5556");
+            err.flush();
+            return 2;
+        }
         LoggerClient loggerClient = null;
         if (logger != null) {
             try {
@@ -197,7 +207,8 @@ public final class RunCommand implements Callable<Integer> {
                 return 2;
             }
             try {
-                published = control.publish(new LocalLiveNetwork(publishedName(definition, file), controller), out);
+                published = control.publish(new LocalLiveNetwork(publishedName(definition, file), controller,
+                        java.util.Optional.ofNullable(loggerViewer)), out);
             } catch (IllegalArgumentException e) {
                 err.println(e.getMessage());
                 err.flush();

@@ -2,6 +2,7 @@ package org.fdnet.hi.app;
 
 import java.io.IOException;
 import java.util.List;
+import java.util.Optional;
 import javax.swing.Action;
 import javax.swing.JCheckBoxMenuItem;
 import javax.swing.JMenu;
@@ -134,7 +135,10 @@ final class LiveMenu {
         refresh();
     }
 
-    /** The selected Datas in the Network State Viewer, live from the logger (asked for once). */
+    /**
+     * The selected Datas in the Network State Viewer, live from the logger: the one recording the attached network
+     * when the network tells where viewers reach it (fdnet demo does), else asked for (and remembered).
+     */
     private void plot() {
         List<String> names = window.current().scene().selection().stream()
                 .filter(r -> window.current().editor().network().node(r).kind() == NodeKind.DATA)
@@ -143,13 +147,44 @@ final class LiveMenu {
             window.status().error("Select one or more Data nodes to plot");
             return;
         }
+        LiveSession live = window.live();
+        if (live == null) {
+            askAndOpenViewer(names);
+            return;
+        }
+        window.status().info("Asking " + live.name() + " where its logger is…");
+        Thread asker = new Thread(() -> {
+            Optional<String> address;
+            try {
+                address = live.loggerViewerAddress();
+            } catch (RuntimeException e) {
+                LOG.warn("{} did not say where its logger is", live.name(), e);
+                address = Optional.empty();
+            }
+            Optional<String> known = address;
+            SwingUtilities.invokeLater(() -> {
+                if (known.isPresent()) {
+                    openViewer(known.get(), names);
+                } else {
+                    askAndOpenViewer(names);
+                }
+            });
+        }, "fdnet-hi-plot-ask");
+        asker.setDaemon(true);
+        asker.start();
+    }
+
+    private void askAndOpenViewer(List<String> names) {
         String address = (String) JOptionPane.showInputDialog(window, "The logger's viewer service (HOST:PORT):",
                 "Plot " + names.size() + " Data", JOptionPane.QUESTION_MESSAGE, null, null, loggerAddress);
         if (address == null || address.isBlank()) {
             return;
         }
         loggerAddress = address.trim();
-        String logger = loggerAddress;
+        openViewer(loggerAddress, names);
+    }
+
+    private void openViewer(String logger, List<String> names) {
         window.status().info("Opening the viewer on " + names + " from the logger at " + logger + "…");
         Thread opener = new Thread(() -> {
             try {

@@ -28,9 +28,15 @@ public final class InProcessRun implements AutoCloseable {
 
     /** Starts {@code definition}, whose node classes are looked up as for a network file in {@code directory}. */
     public static InProcessRun start(NetworkInfo definition, RuntimeOptions options) throws RuntimeStartException {
+        return start(definition, options, java.util.Optional.empty());
+    }
+
+    /** As {@link #start(NetworkInfo, RuntimeOptions)}, recorded by the logger whose viewers connect to {@code loggerViewer}. */
+    public static InProcessRun start(NetworkInfo definition, RuntimeOptions options,
+                                     java.util.Optional<String> loggerViewer) throws RuntimeStartException {
         RuntimeNetwork network = RuntimeNetwork.start(definition, options);
         String name = definition.name() == null ? "unnamed" : definition.name();
-        return new InProcessRun(network, new LocalLiveNetwork(name, network.controller()));
+        return new InProcessRun(network, new LocalLiveNetwork(name, network.controller(), loggerViewer));
     }
 
     /** Reads and starts {@code file} (classes from the library, the RoQ's and the file's own directory). */

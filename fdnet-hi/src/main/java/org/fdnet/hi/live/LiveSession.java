@@ -3,6 +3,7 @@ package org.fdnet.hi.live;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -93,6 +94,14 @@ public final class LiveSession implements AutoCloseable {
 
     public String name() {
         return network.name();
+    }
+
+    /**
+     * Where viewers reach the logger recording the running network ({@code HOST:PORT}), when the run knows it. Any
+     * thread except the Swing thread: it asks the network (a remote call for a network in another process).
+     */
+    public Optional<String> loggerViewerAddress() {
+        return network.loggerViewerAddress();
     }
 
     public boolean collecting() {

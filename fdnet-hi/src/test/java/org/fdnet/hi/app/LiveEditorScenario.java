@@ -11,7 +11,9 @@ import java.awt.Window;
 import java.awt.event.InputEvent;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
@@ -72,7 +74,7 @@ public final class LiveEditorScenario {
         try (ThrowawayLogger logger = new ThrowawayLogger()) {
             LoggerClient events = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(), "live editor"));
             try (InProcessRun run = InProcessRun.start(LiveTestNetwork.definition(),
-                    RuntimeOptions.defaults().workerThreads(2).sink(events))) {
+                    RuntimeOptions.defaults().workerThreads(2).sink(events), Optional.of(logger.viewerAddress()))) {
                 HiWindow window = HiApplication.start(null, new RecentFiles(prefs));
                 new LiveEditorScenario(window, run, images).run(logger.viewerAddress());
             } finally {
@@ -135,19 +137,16 @@ public final class LiveEditorScenario {
         shot("hi-live.png");
     }
 
-    /** Two Datas selected → Live → Plot: the viewer opens on them and draws their logged values. */
+    /**
+     * Two Datas selected → Live → Plot: the running network says where its logger is, so the viewer opens on them
+     * without asking and draws their logged values.
+     */
     private void plot(String loggerAddress) throws Exception {
         edt(() -> {
             window.current().scene().select(Set.of(ref("Wave/signal"), ref("Out")));
             return null;
         });
         SwingUtilities.invokeLater(() -> menuItem("live.plot").doClick());
-        JDialog ask = dialogTitled("Plot 2 Data");
-        edt(() -> {
-            find(ask, JTextField.class, null).setText(loggerAddress);
-            return null;
-        });
-        clickButton(ask, "OK");
         AtomicReference<ViewerWindow> viewer = new AtomicReference<>();
         waitFor("the viewer opened", () -> {
             for (Window w : Window.getWindows()) {
@@ -160,6 +159,9 @@ public final class LiveEditorScenario {
         });
         waitFor("the viewer draws both Datas' values", () -> viewer.get().livePlot().data().series().size() == 2
                 && viewer.get().livePlot().data().acceptedEvents() > 20);
+        check(Arrays.stream(Window.getWindows()).noneMatch(w -> w instanceof JDialog d && d.isShowing()
+                && d.getTitle().startsWith("Plot")), "no dialog asked for the logger's address");
+        check(edt(() -> window.status().message()).contains(loggerAddress), "the status bar names the run's logger");
         shot(viewer.get(), "hi-live-plot.png");
         edt(() -> {
             viewer.get().dispose();

@@ -46,6 +46,12 @@ public final class SourceDirectory {
         }
     }
 
+    /** The logger's id of the run a core names by {@code uuid} (what viewers list and replay), once it said HELLO. */
+    public synchronized java.util.OptionalInt runIdOf(UUID uuid) {
+        RunProgress run = runs.get(uuid);
+        return run == null ? java.util.OptionalInt.empty() : java.util.OptionalInt.of(run.runId());
+    }
+
     /** The run of a core's HELLO: known in memory, found in the database, or created there. */
     public RunProgress openRun(UUID uuid, String coreName) throws SQLException {
         synchronized (this) {

@@ -85,11 +85,14 @@ public final class DemoCommand implements Callable<Integer> {
     @Mixin
     ControlOptions control;
 
+    /** HOST:PORT of the embedded logger's viewer service; null when the demo records with no logger of its own. */
+    private String loggerViewer;
+
     /** The network's control object, for {@code fdnet control} and the editor's {@code --attach}; null without one. */
     private ControlPublication publishControl(RuntimeNetwork net, NetworkInfo definition) {
         try {
-            return control.publish(new LocalLiveNetwork(RunCommand.publishedName(definition, network), net.controller()),
-                    new java.io.PrintWriter(System.out, true));
+            return control.publish(new LocalLiveNetwork(RunCommand.publishedName(definition, network), net.controller(),
+                    java.util.Optional.ofNullable(loggerViewer)), new java.io.PrintWriter(System.out, true));
         } catch (IllegalArgumentException e) {
             System.err.println("fdnet demo: the control object is not published: " + e.getMessage());
             return null;
@@ -128,13 +131,14 @@ public final class DemoCommand implements Callable<Integer> {
         if (!noLogger && logger == null) {
             System.out.println("fdnet demo: starting the network state logger (embedded PostgreSQL) ...");
             try {
-                embedded = LocalLogger.start();
+                embedded = LocalLogger.start(true);
             } catch (Exception e) {
                 System.err.println("fdnet demo: the logger does not start: " + e.getMessage()
                         + " (run with --no-logger to do without)");
                 return 1;
             }
             logger = "127.0.0.1:" + embedded.receiverPort();
+            loggerViewer = LocalLogger.viewerAddress(embedded);
         }
         try {
             return run(embedded);
@@ -177,6 +181,9 @@ public final class DemoCommand implements Callable<Integer> {
             startY = s.groundTruthBodyPosition(1);
             System.out.printf(Locale.ROOT, "fdnet demo: %s on course %s, real time, %d s%s%n", network, c.name(), seconds,
                     client == null ? ", not recorded" : ", recording with the logger at " + logger + " (run " + client.run() + ")");
+            if (embedded != null) {
+                System.out.println(viewerLine(embedded, client));
+            }
             if (gui) {
                 window = RoqDemoWindow.open("FDNet demo: " + definition.name() + " on " + c.name(), sim.heightfield());
             }
@@ -235,6 +242,25 @@ public final class DemoCommand implements Callable<Integer> {
                     embedded != null ? "the embedded PostgreSQL" : "the logger at " + logger, st.lost());
         }
         return fallen ? 1 : 0;
+    }
+
+    /**
+     * The one line telling where viewers reach the embedded logger and the logger's id of this run (what
+     * {@code fdnet viewer --replay} takes), once the logger has opened the run (waits at most 3 s for that).
+     */
+    private String viewerLine(NetworkStateLogger embedded, LoggerClient client) throws InterruptedException {
+        java.util.OptionalInt run = java.util.OptionalInt.empty();
+        for (int i = 0; i < 60 && run.isEmpty(); i++) {
+            run = embedded.directory().runIdOf(client.run());
+            if (run.isEmpty()) {
+                Thread.sleep(50);
+            }
+        }
+        return run.isPresent()
+                ? "logger for viewers: " + loggerViewer + ", run " + run.getAsInt() + " (fdnet viewer --logger "
+                        + loggerViewer + " --replay " + run.getAsInt() + " --from -60)"
+                : "logger for viewers: " + loggerViewer + " (fdnet viewer --logger " + loggerViewer
+                        + "; the run has not reached the logger yet)";
     }
 
     private static void show(RoqDemoWindow window, SensorSnapshot s, DemoFigures figures) {

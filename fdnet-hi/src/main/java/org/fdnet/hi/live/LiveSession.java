@@ -9,6 +9,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Supplier;
 import javax.swing.SwingUtilities;
 import org.fdnet.control.LiveNetwork;
 import org.fdnet.control.LiveNetworkListener;
@@ -32,6 +33,11 @@ import org.slf4j.LoggerFactory;
  * snapshot is read (off the Swing thread) and the difference adopted into the editor, which keeps the places of
  * existing nodes and gives new ones a place.
  *
+ * <p>Every call to the network (an edit, a module command, a value sent, a deploy) runs on the session's
+ * {@link NetworkCallThread}: the status bar says "Sending to NAME: …" and the Swing thread keeps dispatching events
+ * until the outcome is there; one change at a time (another one meanwhile is refused at once, saying so). While a
+ * change is under way the network's own changes are not adopted; they are read again once it is answered.
+ *
  * <p>Swing thread for every public method. Snapshots read before the editor's own executed edit are dropped
  * (they would take it back for a moment) and read again: {@link #epoch} counts executed edits.
  */
@@ -48,6 +54,7 @@ public final class LiveSession implements AutoCloseable {
     private final AtomicLong epoch = new AtomicLong();
     private final LiveValuesRelay values;
     private final AutoCloseable subscription;
+    private final NetworkCallThread calls;
     private NetworkInfo base;
     private boolean collecting;
     private boolean ended;
@@ -66,6 +73,7 @@ public final class LiveSession implements AutoCloseable {
             return t;
         });
         this.values = new LiveValuesRelay(scene);
+        this.calls = new NetworkCallThread(network.name());
         editor.setGate(collecting ? null : this::sendEdit);
         this.subscription = network.subscribe(new Listener());
     }
@@ -132,8 +140,10 @@ public final class LiveSession implements AutoCloseable {
      */
     public ChangeOutcome deploy() {
         NetworkDiff diff = pending();
-        ChangeOutcome outcome = network.apply("Deploy " + diff.entries().size() + " changes", base.copy(),
-                editor.network().copy());
+        String label = "Deploy " + diff.entries().size() + " changes";
+        NetworkInfo from = base.copy();
+        NetworkInfo to = editor.network().copy();
+        ChangeOutcome outcome = send(label, () -> network.apply(label, from, to));
         if (outcome.executed()) {
             collecting = false;
             base = editor.network().copy();
@@ -152,7 +162,7 @@ public final class LiveSession implements AutoCloseable {
     }
 
     private ChangeOutcome sendEdit(String label, NetworkInfo before, NetworkInfo after) {
-        ChangeOutcome outcome = network.apply(label, before, after);
+        ChangeOutcome outcome = send(label, () -> network.apply(label, before, after));
         if (outcome.executed()) {
             base = after;
             epoch.incrementAndGet();
@@ -165,27 +175,43 @@ public final class LiveSession implements AutoCloseable {
     // ---------------------------------------------------------------- commands
 
     public ChangeOutcome load(String module) {
-        return command(network.load(module));
+        return command("load module " + module, () -> network.load(module));
     }
 
     public ChangeOutcome unload(String module) {
-        return command(network.unload(module));
+        return command("unload module " + module, () -> network.unload(module));
     }
 
     public ChangeOutcome hold(String module) {
-        return command(network.hold(module));
+        return command("hold module " + module, () -> network.hold(module));
     }
 
     public ChangeOutcome resume(String module) {
-        return command(network.resume(module));
+        return command("resume module " + module, () -> network.resume(module));
     }
 
     /** Writes {@code text} into the running Data {@code data} (the information panel's "send a value"). */
     public ChangeOutcome send(NodeRef data, String text) {
-        return command(network.send(data, text));
+        return command("send " + data + "=" + text, () -> network.send(data, text));
     }
 
-    private ChangeOutcome command(ChangeOutcome outcome) {
+    /**
+     * Sends one change on the session's network thread, the status bar saying so meanwhile; refused at once when
+     * another change is still under way. The network's own changes are read again afterwards.
+     */
+    private ChangeOutcome send(String what, Supplier<ChangeOutcome> change) {
+        if (calls.busy()) {
+            return ChangeOutcome.failed(what, "still sending the previous change to " + network.name()
+                    + "; try again once it is answered");
+        }
+        view.info("Sending to " + network.name() + ": " + what + " …");
+        ChangeOutcome outcome = calls.call(change);
+        readSoon();
+        return outcome;
+    }
+
+    private ChangeOutcome command(String what, Supplier<ChangeOutcome> change) {
+        ChangeOutcome outcome = send(what, change);
         if (outcome.executed()) {
             view.info(outcome.toString());
         } else {
@@ -196,13 +222,21 @@ public final class LiveSession implements AutoCloseable {
     }
 
     /**
-     * Reads the snapshot now, on this thread, and follows it (before saving the running network). False when the
+     * Reads the snapshot now (on the session's network thread, this thread waiting for it) and follows it (before
+     * saving the running network). False when the
      * network could not be read: the session has then ended as lost.
      */
     public boolean followNow() {
+        if (calls.busy()) {
+            view.error("Still sending a change to " + network.name() + "; try again once it is answered");
+            return false;
+        }
         epoch.incrementAndGet();
         try {
-            follow(epoch.get(), network.snapshot(), network.loadedModules(), network.heldModules());
+            view.info("Reading " + network.name() + " …");
+            RunningState state = calls.call(() -> new RunningState(network.snapshot(), network.loadedModules(),
+                    network.heldModules()));
+            follow(epoch.get(), state.snapshot(), state.loaded(), state.held());
             return true;
         } catch (RuntimeException e) {
             LOG.warn("reading the state of {} failed", network.name(), e);
@@ -234,8 +268,8 @@ public final class LiveSession implements AutoCloseable {
     }
 
     private void follow(long seen, NetworkInfo snapshot, Set<String> loaded, Set<String> held) {
-        if (ended) {
-            return;
+        if (ended || calls.busy()) {
+            return; // a change of ours is under way: the state is read again once it is answered
         }
         view.modulesChanged(loaded, held);
         scene.keepLiveValuesOf(loaded);
@@ -287,6 +321,7 @@ public final class LiveSession implements AutoCloseable {
             editor.setGate(null);
         }
         reader.shutdownNow();
+        calls.close();
         values.stop();
         try {
             subscription.close();
@@ -302,6 +337,10 @@ public final class LiveSession implements AutoCloseable {
 
     public boolean ended() {
         return ended;
+    }
+
+    /** The running network as read at one moment: its definition and its modules' states. */
+    private record RunningState(NetworkInfo snapshot, Set<String> loaded, Set<String> held) {
     }
 
     private final class Listener implements LiveNetworkListener {

@@ -3,8 +3,10 @@
  * reached through its control object). A {@link org.fdnet.hi.live.LiveSession} is one attachment.
  *
  * <pre>
- *  user edit ─▶ UndoableNetworkEditor ─try on a copy─▶ EditGate = LiveSession.sendEdit ─apply(base, edited)─▶ network
- *                      ▲  executed: apply here, undo step               refused: nothing here, status bar says why
+ *  user edit ─▶ UndoableNetworkEditor ─try on a copy─▶ EditGate = LiveSession.sendEdit
+ *                      ▲                     ─NetworkCallThread (Swing keeps dispatching: "Sending …")─▶ apply(base, edited) ─▶ network
+ *                      │  executed: apply here, undo step               refused: nothing here, status bar says why
+ *  module list, "send a value", deploy ─▶ the same NetworkCallThread, one change at a time
  *                      │
  *  network ─changeSettled─▶ session thread: snapshot, modules ─▶ Swing: NetworkDiff(editor, snapshot) ─▶ adopt
  *          ─valuesSampled─▶ LiveValuesRelay (texts, one hand-over queued at most) ─▶ GraphScene ─▶ canvas

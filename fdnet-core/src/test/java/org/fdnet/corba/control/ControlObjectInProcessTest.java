@@ -89,6 +89,7 @@ class ControlObjectInProcessTest {
             try (RemoteLiveNetwork remote = RemoteLiveNetwork.attach("in-process", null)) {
                 assertThat(remote.name()).isEqualTo("in-process");
                 assertThat(remote.snapshot()).isEqualTo(net.controller().snapshot());
+                assertThat(remote.loggerViewerAddress()).as("a run that knows no logger says none").isEmpty();
                 Heard heard = new Heard();
                 remote.subscribe(heard);
 

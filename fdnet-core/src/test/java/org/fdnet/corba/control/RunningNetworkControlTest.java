@@ -64,11 +64,14 @@ class RunningNetworkControlTest {
         return file;
     }
 
+    /** What the run is told with --logger-viewer (no logger needs to listen there: the run only passes it on). */
+    private static final String VIEWERS = "127.0.0.1:5599";
+
     @BeforeEach
     void startRun() throws Exception {
         port = FdnetChildProcess.freePort();
         run = FdnetChildProcess.start("fdnet run", List.of("run", networkFile().toString(), "--for", "110s",
-                "--control-port", Integer.toString(port)), "control object of", 60_000);
+                "--control-port", Integer.toString(port), "--logger-viewer", VIEWERS), "control object of", 60_000);
         network = RemoteLiveNetwork.attach("127.0.0.1:" + port, null);
     }
 
@@ -123,6 +126,11 @@ class RunningNetworkControlTest {
             }
             return null;
         }
+    }
+
+    @Test
+    void shouldTellAToolWhereViewersReachTheRunsLogger() {
+        assertThat(network.loggerViewerAddress()).contains(VIEWERS);
     }
 
     @Test

@@ -58,6 +58,12 @@ class RunCommandTest {
     }
 
     @Test
+    void shouldExitTwoForALoggerViewerAddressThatIsNotHostAndPort() {
+        assertThat(fdnet("run", "../networks/roq-motion.fdn", "--for", "1s", "--logger-viewer", "5556")).isEqualTo(2);
+        assertThat(cli.output()).contains("--logger-viewer 5556: expected HOST:PORT");
+    }
+
+    @Test
     void shouldTraceEveryEventWithNodeNames() {
         assertThat(fdnet("run", "../networks/roq-motion.fdn", "--for", "300ms", "--trace")).isZero();
         assertThat(cli.output()).contains("trace ").contains("command  load module main")

@@ -35,6 +35,11 @@ public class ProbeGround extends Relation {
     private static final double SMOOTHING = 0.03;
     /** How long the force must stay collapsed to call the ground given way, s. */
     private static final double GIVE_WAY = 0.05;
+    private static final String GAVE_WAY = "gave way";
+    /** The counters' Data names (outputs connected by these names get them). */
+    static final String PROBES = "probes";
+    static final String FRAGILE_FOUND = "fragile found";
+    static final String FRAGILE_AVOIDED = "fragile avoided";
 
     private double force = Double.NaN;
     private double lowSince = Double.NaN;
@@ -45,9 +50,17 @@ public class ProbeGround extends Relation {
     private double last = Double.NaN;
     private double heldSince = Double.NaN;
     private double peak;
+    /** How far the foot was lowered when its sole first bore 90 % of the test force, m (NaN before). */
+    private double found = Double.NaN;
+    private double sink;
     private boolean decided;
     private long accepted;
     private long rejected;
+    private long probes;
+    private long fragileFound;
+    private long fragileAvoided;
+    /** The leg whose foothold gave way at this touchdown, until it is accepted elsewhere or the gait steps on. */
+    private int gaveWay = -1;
 
     @Override
     protected void init(NodeParameters p) {
@@ -55,6 +68,10 @@ public class ProbeGround extends Relation {
         hold = p.doubleValue("hold", 0.25);
         pressSpeed = p.doubleValue("pressSpeed", 0.1);
         maxPress = p.doubleValue("maxPress", 0.08);
+        sink = p.doubleValue("sink", 0.02);
+        if (!(sink > 0) || sink > 0.1) {
+            throw p.invalid("sink", "must lie between 0 and 0.1 m, was " + sink);
+        }
         if (!(testForce > 0)) {
             throw p.invalid("testForce", "must be more than 0 N, was " + testForce);
         }
@@ -88,6 +105,7 @@ public class ProbeGround extends Relation {
         last = now;
         if (!announced && c.outputCount() > 1) {
             c.output(1, Value.ofDoubles(-1, 0, 0)); // "no verdict yet": tells the gait that probing is loaded
+            writeCounts(c);
             announced = true;
         }
         if (phase == null || soles == null || phase.length() < 3 || soles.length() < LEGS) {
@@ -120,11 +138,19 @@ public class ProbeGround extends Relation {
                 lowSince = now;
             }
             if (now - lowSince >= GIVE_WAY) {
-                decide(c, leg, -1, String.format(Locale.ROOT, "gave way: %.0f N after %.0f N", force, peak));
+                decide(c, leg, -1, String.format(Locale.ROOT, GAVE_WAY + ": %.0f N after %.0f N", force, peak));
                 return;
             }
         } else {
             lowSince = Double.NaN;
+        }
+        if (Double.isNaN(found) && force >= 0.9 * testForce) {
+            found = depth; // the ground is here
+        }
+        if (!Double.isNaN(found) && depth - found >= sink) {
+            decide(c, leg, -1, String.format(Locale.ROOT, GAVE_WAY + ": sank %.3f m after bearing %.0f N", depth - found,
+                    peak));
+            return;
         }
         if (Double.isNaN(heldSince) && force >= testForce) {
             heldSince = now; // the test force is reached: stop lowering, hold the foot where it is
@@ -147,6 +173,9 @@ public class ProbeGround extends Relation {
     }
 
     private void start(int leg, long attempt) {
+        if (leg != probing) {
+            gaveWay = -1; // a new touchdown: a fragile foothold left behind was not avoided by a probed one
+        }
         this.attempt = attempt;
         probing = leg;
         depth = 0;
@@ -154,6 +183,7 @@ public class ProbeGround extends Relation {
         lowSince = Double.NaN;
         force = Double.NaN;
         peak = 0;
+        found = Double.NaN;
         decided = false;
     }
 
@@ -162,17 +192,40 @@ public class ProbeGround extends Relation {
         if (verdict < 0) {
             depth = 0; // lift off ground that gave way; an accepted foot stays pressed until the gait steps on
         }
+        probes++;
         if (verdict > 0) {
             accepted++;
+            if (gaveWay == leg) {
+                fragileAvoided++; // the gait chose another foothold after this one gave way, and it holds
+                gaveWay = -1;
+            }
         } else {
             rejected++;
+            if (why.startsWith(GAVE_WAY)) {
+                fragileFound++;
+                gaveWay = leg;
+            }
         }
         writePress(c, leg);
         if (c.outputCount() > 1) {
             c.output(1, Value.ofDoubles(leg, verdict, attempt));
         }
+        writeCounts(c);
         c.report("leg " + leg + (verdict > 0 ? " accepted: " : " rejected: ") + why + "; " + accepted
                 + " footholds accepted, " + rejected + " rejected");
+    }
+
+    private void writeCounts(RelationContext c) {
+        writeCount(c, PROBES, probes);
+        writeCount(c, FRAGILE_FOUND, fragileFound);
+        writeCount(c, FRAGILE_AVOIDED, fragileAvoided);
+    }
+
+    private static void writeCount(RelationContext c, String name, long count) {
+        int i = c.outputIndex(name);
+        if (i >= 0) {
+            c.output(i, Value.of(count));
+        }
     }
 
     private void writePress(RelationContext c, int leg) {

@@ -22,6 +22,10 @@ import org.fdnet.runtime.Value;
  * on. Rejected, it chooses a shorter step ({@code retreat} m, default 0.08, further back) and probes again, at
  * most {@code tries} times (default 3); the last foothold is stepped on whatever the verdict, and reported. If the
  * verdict disappears (Probing unloaded), it steps on without probing.
+ *
+ * <p>{@code stance} (m, default the standing pose's 0.43): how far each foot stands from the body's centre line.
+ * The simulator sets RoQ down in its standing pose; each leg moves to the stance while it swings, so after the
+ * first four steps the feet walk at the stance's width.
  */
 public class CrawlGait extends Relation {
     /** hr, fr, hl, fl. */

@@ -16,10 +16,17 @@ import org.fdnet.runtime.Value;
 
 /**
  * Keep balance: reads the gait's feet (12 numbers, body frame) and its phase {leg about to swing or swinging,
- * in the air, probe attempt}, and shifts the body so that the centre of mass comes over the incentre of the
- * support triangle of the three other feet (the point of the triangle farthest from its edges) — smoothly, with a time constant {@code tau} s (default 0.25). The
+ * in the air, probe attempt}, and shifts the body so that the centre of mass comes over the centroid of the
+ * support triangle of the three other feet — smoothly, with a time constant {@code tau} s (default 0.25). The
  * centre of mass is estimated from the feet: the body's mass at its centre, each coxa at its hip, the rest of
  * each leg halfway between hip and foot.
+ *
+ * <p>While the lifted foot probes the ground ({@link ProbeGround}: the phase's probe attempt is non-zero) with
+ * {@code press} N (default 0: no leaning), that foot pushes the body up; the three other feet then carry the
+ * weight as if the centre of mass stood at c + k (c − foot), k = press / (weight − press). So the body leans
+ * towards the probed foot by k / (2 + k) of the way: c and that point lie about as far inside the triangle, and the
+ * foot can press its test force without lifting a neighbour off the ground — and should the ground give way, c is
+ * still inside the triangle.
  *
  * <p>Outputs: the Data named {@code margin} (when connected) gets the stability margin every firing — the
  * estimated centre of mass's distance to the nearest edge of the support polygon, m, negative outside: the
@@ -68,9 +75,7 @@ public class KeepBalance extends Relation {
         }
         int next = (int) phase.element(0);
         boolean up = phase.length() > 1 && phase.element(1) > 0.5 || phase.length() > 2 && phase.element(2) > 0.5;
-        // where the centre of mass must go: the incentre of the triangle of the three feet that stay down, the
-        // point farthest from all its edges (farther from the edge next to the lifted foot than the centroid:
-        // that is what lets the lifted foot press down on the ground when it probes)
+        // where the centre of mass must go: over the centroid of the three feet that stay down
         double[] tri = new double[6];
         int k = 0;
         for (int leg = 0; leg < LEGS; leg++) {

@@ -10,19 +10,23 @@ import org.fdnet.runtime.Value;
 
 /**
  * Probe the ground — the thesis's "active movement sense": before the gait puts weight on a new foothold, the
- * swung foot is lowered until its sole reads {@code testForce} N (default 55: above a fragile cell's 40 N, below
- * the ~65 N a foot carries when three feet hold the robot) and held there. Ground that bears it (at least 90 % of
- * it) for {@code hold} s (default 0.25) is accepted. Ground that gives way — the sole force (a 30 ms running mean) stays below a
- * quarter of the test force for 50 ms after having passed 60 % of it (the cell broke under the probe, not under the robot), or the
- * foot went {@code maxPress} m (default 0.08) down without finding the force — is rejected, and the gait
- * chooses another foothold. While the probe presses, the balance keeps the body over the three other feet, so a
- * breaking cell costs the robot nothing.
+ * swung foot is lowered until its sole reads {@code testForce} N (default 55: above a fragile cell's 40 N, near
+ * what a foot carries when three feet hold the robot) and held there. Ground that bears it (at least 90 % of it)
+ * for {@code hold} s (default 0.25) is accepted. Ground that gives way is rejected, and the gait chooses another
+ * foothold: the sole force (a 30 ms running mean) stays below a quarter of the test force for 50 ms after having
+ * passed 60 % of it, or the foot had to go {@code sink} m (default 0.02) further down after first bearing 90 % of
+ * the test force (the cell broke under the probe and the foot went on to the bottom of its pit). Ground not found
+ * within {@code maxPress} m (default 0.08) is rejected too ("no footing"). While the probe presses, the balance
+ * ({@link KeepBalance} with its {@code press}) keeps the body over the three other feet, so a breaking cell costs
+ * the robot nothing.
  *
  * <p>Inputs, in Reader order: the gait phase {leg, in the air, probe attempt (a new positive number for every
  * foothold the gait waits on, 0 otherwise)} and the sole forces (4, N). Outputs, in Writer order: (0) the press:
  * an offset to add to the feet (12 numbers, only the probed foot's z is non-zero: how far it is lowered) and
- * (1) the verdict {leg, +1 accepted / −1 rejected, the attempt it answers};
- * the gait reads (1). Reports the footholds accepted and rejected.
+ * (1) the verdict {leg, +1 accepted / −1 rejected, the attempt it answers}; the gait reads (1). Outputs connected
+ * to Datas named {@code probes}, {@code fragile found} and {@code fragile avoided} get the counts (written when
+ * they change): footholds probed; footholds that gave way; of those, the ones the gait replaced at the same
+ * touchdown by a foothold that held. Reports every verdict.
  */
 public class ProbeGround extends Relation {
     private final double[] press = new double[3 * LEGS];

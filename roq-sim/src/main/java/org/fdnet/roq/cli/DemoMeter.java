@@ -26,7 +26,7 @@ import org.fdnet.runtime.Value;
  * <pre>
  *   network events ──▶ DemoMeter (EventSink) ──▶ the logger client (when recording)
  *                        │ counts every event; the stability margin: every value the Data named "margin"
- *                        │ takes (Balance's), or without one the last "margin X m" a relation reported
+ *                        │ takes after its initial one (Balance's), or without one the last "margin X m" reported
  *   network Datas  ──▶ probes / fragile found / fragile avoided, read by name when a module has them
  *   simulator      ──▶ sim time, distance, broken cells, loop statistics
  *                        └──▶ {@link DemoFigures}
@@ -47,6 +47,7 @@ final class DemoMeter implements EventSink {
     private volatile double smallest = Double.NaN;
     /** The event source id of the Data named "margin", once the network has named it; -1 before. */
     private volatile int marginSource = -1;
+    private volatile boolean marginInitialSeen;
     private final Map<String, NodeRef> counters = new HashMap<>();
 
     DemoMeter(EventSink next) {
@@ -75,7 +76,10 @@ final class DemoMeter implements EventSink {
                 && n.name().node().toLowerCase(Locale.ROOT).equals(MARGIN_DATA)) {
             marginSource = n.sourceId();
         } else if (event instanceof DataValueEvent d && d.sourceId() == marginSource) {
-            take(d.value());
+            if (marginInitialSeen) {
+                take(d.value());
+            }
+            marginInitialSeen = true; // the first is the Data's initial value (0), logged before Balance computed one
         } else if (marginSource < 0 && event instanceof RelationValueEvent r) {
             Matcher m = MARGIN.matcher(r.value());
             if (m.matches()) {
@@ -93,6 +97,9 @@ final class DemoMeter implements EventSink {
             v = Double.parseDouble(text);
         } catch (NumberFormatException notANumber) {
             return; // the margin Data holds something else than a number: the margin stays as it was
+        }
+        if (Double.isNaN(v)) {
+            return;
         }
         margin = v;
         if (Double.isNaN(smallest) || v < smallest) {

@@ -66,9 +66,10 @@ class DemoMeterTest {
     }
 
     @Test
-    void shouldPreferTheValuesOfTheMarginDataToTheReports() throws Exception {
+    void shouldPreferTheValuesOfTheMarginDataToTheReportsLeavingOutItsInitialValue() throws Exception {
         DemoMeter meter = new DemoMeter(null);
         meter.accept(new NodeNamedEvent(5, 1, NodeKind.DATA, new NodeRef("Balance", "margin")));
+        meter.accept(new DataValueEvent(5, 1, ValueType.DOUBLE, "0.0")); // the Data's initial value, not a margin
         meter.accept(new DataValueEvent(5, 2, ValueType.DOUBLE, "0.081"));
         meter.accept(new RelationValueEvent(3, 3, "margin 0.500 m"));
         meter.accept(new DataValueEvent(5, 4, ValueType.DOUBLE, "-0.012"));
@@ -77,7 +78,8 @@ class DemoMeterTest {
         try (RuntimeNetwork net = RuntimeNetwork.start(plain(), RuntimeOptions.defaults())) {
             DemoFigures f = meter.figures(net, new SensorSnapshot(), 0, new LoopStatistics(), false);
             assertThat(f.margin()).isEqualTo(0.064);
-            assertThat(f.smallestMargin()).as("smallest of the margin Data's values").isEqualTo(-0.012);
+            assertThat(f.smallestMargin()).as("smallest of the margin Data's values after its initial one")
+                    .isEqualTo(-0.012);
         }
     }
 

@@ -46,6 +46,8 @@ public class KeepBalance extends Relation {
     private final double[] offset = new double[3 * LEGS];
     private final double[] px = new double[LEGS];
     private final double[] py = new double[LEGS];
+    /** The three feet that stay down: x, y of each. */
+    private final double[] tri = new double[6];
     private double tau;
     private double dx;
     private double dy;
@@ -76,7 +78,6 @@ public class KeepBalance extends Relation {
         int next = (int) phase.element(0);
         boolean up = phase.length() > 1 && phase.element(1) > 0.5 || phase.length() > 2 && phase.element(2) > 0.5;
         // where the centre of mass must go: over the centroid of the three feet that stay down
-        double[] tri = new double[6];
         int k = 0;
         for (int leg = 0; leg < LEGS; leg++) {
             if (leg != next) {
@@ -90,9 +91,9 @@ public class KeepBalance extends Relation {
         boolean probing = phase.length() > 2 && phase.element(2) > 0.5 && next >= 0 && next < LEGS;
         if (probing && press > 0) {
             // the probed foot pushes the body up with `press`: the other three feet then carry the weight as if
-            // it stood at c + k (c − foot), k = press / (weight − press). Move the centre of mass towards the
-            // probed foot by t = k / (2 + k) of the way, so both c (should the ground give way) and that point
-            // (while the foot presses) lie as far inside the triangle.
+            // it stood at c + lever (c − foot), lever = press / (weight − press). Move the centre of mass towards
+            // the probed foot by t = lever / (2 + lever) of the way, so both c (should the ground give way) and
+            // that point (while the foot presses) lie about as far inside the triangle.
             double lever = press / (WEIGHT - press);
             double t = lever / (2 + lever);
             cx += t * (feet.element(3 * next) - cx);

@@ -29,7 +29,13 @@ public interface LiveNetwork extends NetworkControl, AutoCloseable {
      * definition as one change request, all of it or none. Changes the network made since {@code base}
      * are kept; a difference that no longer fits them is refused with the reason.
      */
-    ChangeOutcome apply(String description, NetworkInfo base, NetworkInfo edited);
+    default ChangeOutcome apply(String description, NetworkInfo base, NetworkInfo edited) {
+        NetworkDiff diff = NetworkDiff.between(base, edited);
+        if (diff.isEmpty()) {
+            return ChangeOutcome.executed(description + " (no changes)");
+        }
+        return apply(description, diff.asEdit());
+    }
 
     /** Subscribes to settled changes and to sampled live values; close the handle to stop. */
     AutoCloseable subscribe(LiveNetworkListener listener);

@@ -60,4 +60,25 @@ class LogRoutingTest {
                 .contains("ORB run").contains("ORB still running");
         assertThat(terminal().split("cannot write", -1)).hasSize(2);
     }
+
+    @Test
+    void shouldKeepOnlyTheNewestLogFilesWhenANewOneIsCreated() throws IOException {
+        Path logs = Files.createDirectories(folder.resolve("logs"));
+        for (int i = 0; i < 25; i++) {
+            Path old = Files.writeString(logs.resolve(String.format("fdnet-20261123-0900%02d-1.log", i)), "run " + i);
+            Files.setLastModifiedTime(old, java.nio.file.attribute.FileTime.fromMillis(1_000_000L * (i + 1)));
+        }
+        Path notOurs = Files.writeString(logs.resolve("notes.txt"), "keep me");
+        Path file = logs.resolve("fdnet-20261123-100000-2.log");
+        LogRouting routing = new LogRouting(file, Level.INFO, terminal, new OldLogFiles(logs, 20, terminal));
+        routing.write(Level.INFO, "org.jacorb.orb", "ORB run", null);
+
+        try (var listed = Files.list(logs)) {
+            assertThat(listed.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".log")).sorted().toList())
+                    .hasSize(20).contains("fdnet-20261123-100000-2.log", "fdnet-20261123-090024-1.log",
+                            "fdnet-20261123-090006-1.log").doesNotContain("fdnet-20261123-090005-1.log");
+        }
+        assertThat(notOurs).exists();
+        assertThat(Files.readString(file)).contains("ORB run");
+    }
 }

@@ -13,8 +13,9 @@ import java.util.List;
 /**
  * Keeps the log folder from filling up: every {@code fdnet} command writes its own {@code fdnet-*.log}, so
  * before a new one is created the oldest are deleted until {@code keep - 1} remain (with the new one: the
- * newest {@code keep}). Only files named {@code fdnet-*.log} are touched. A file that cannot be deleted is
- * named on the terminal with the reason and left in place.
+ * newest {@code keep}). Only files named {@code fdnet-*.log} are touched, and never the file of a command
+ * still running (its process id ends the name). A file that cannot be deleted is named on the terminal with
+ * the reason and left in place.
  */
 final class OldLogFiles {
     static final int DEFAULT_KEPT = 20;
@@ -47,6 +48,9 @@ final class OldLogFiles {
         logs.sort(Comparator.comparing(OldLogFiles::modified).thenComparing(Path::getFileName).reversed());
         int deleted = 0;
         for (Path old : logs.subList(Math.min(logs.size(), keep - 1), logs.size())) {
+            if (writerStillRunning(old)) {
+                continue;
+            }
             try {
                 Files.deleteIfExists(old);
                 deleted++;
@@ -55,6 +59,25 @@ final class OldLogFiles {
             }
         }
         return deleted;
+    }
+
+    /**
+     * A command still running keeps its file, however old: the name ends with its process id
+     * ({@code fdnet-<time>-<pid>.log}); a long-running {@code fdnet logger} would otherwise lose its log.
+     */
+    static boolean writerStillRunning(Path file) {
+        String name = file.getFileName().toString();
+        int dash = name.lastIndexOf('-');
+        int dot = name.lastIndexOf('.');
+        if (dash < 0 || dot <= dash + 1) {
+            return false;
+        }
+        try {
+            long pid = Long.parseLong(name.substring(dash + 1, dot));
+            return ProcessHandle.of(pid).map(ProcessHandle::isAlive).orElse(false);
+        } catch (NumberFormatException e) {
+            return false; // not a name fdnet gave: no process to wait for
+        }
     }
 
     private static FileTime modified(Path file) {

@@ -30,7 +30,13 @@ public interface LiveNetwork extends NetworkControl, AutoCloseable {
      * definition as one change request, all of it or none. Changes the network made since {@code base}
      * are kept; a difference that no longer fits them is refused with the reason.
      */
-    ChangeOutcome apply(String description, NetworkInfo base, NetworkInfo edited);
+    default ChangeOutcome apply(String description, NetworkInfo base, NetworkInfo edited) {
+        NetworkDiff diff = NetworkDiff.between(base, edited);
+        if (diff.isEmpty()) {
+            return ChangeOutcome.executed(description + " (no changes)");
+        }
+        return apply(description, diff.asEdit());
+    }
 
     /**
      * Where viewers reach the logger that records this run ({@code HOST:PORT} of its viewer service), when the run

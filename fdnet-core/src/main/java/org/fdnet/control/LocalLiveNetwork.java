@@ -5,7 +5,6 @@ import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.Set;
-import java.util.concurrent.CopyOnWriteArrayList;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
@@ -33,7 +32,7 @@ import org.fdnet.runtime.Value;
 public final class LocalLiveNetwork implements LiveNetwork {
     private final String name;
     private final Controller controller;
-    private final List<LiveSubscription> subscriptions = new CopyOnWriteArrayList<>();
+    private final LiveSubscriptions subscriptions;
     private final SampledNetwork sampled = new SampledNetwork() {
         @Override
         public void addChangeListener(ChangeListener listener) {
@@ -67,6 +66,7 @@ public final class LocalLiveNetwork implements LiveNetwork {
         this.name = Objects.requireNonNull(name, "name");
         this.controller = Objects.requireNonNull(controller, "controller");
         this.loggerViewerAddress = Objects.requireNonNull(loggerViewerAddress, "loggerViewerAddress");
+        this.subscriptions = new LiveSubscriptions(name, sampled);
     }
 
     @Override
@@ -92,15 +92,6 @@ public final class LocalLiveNetwork implements LiveNetwork {
     @Override
     public Set<String> heldModules() {
         return controller.heldModules();
-    }
-
-    @Override
-    public ChangeOutcome apply(String description, NetworkInfo base, NetworkInfo edited) {
-        NetworkDiff diff = NetworkDiff.between(base, edited);
-        if (diff.isEmpty()) {
-            return ChangeOutcome.executed(description + " (no changes)");
-        }
-        return controller.apply(description, diff.asEdit());
     }
 
     @Override
@@ -140,10 +131,7 @@ public final class LocalLiveNetwork implements LiveNetwork {
 
     @Override
     public AutoCloseable subscribe(LiveNetworkListener listener) {
-        LiveSubscription s = new LiveSubscription(name, sampled, listener, subscriptions::remove);
-        subscriptions.add(s);
-        s.start();
-        return s;
+        return subscriptions.open(listener);
     }
 
     /**
@@ -151,17 +139,13 @@ public final class LocalLiveNetwork implements LiveNetwork {
      * their subscriptions. The run calls it when it stops the network.
      */
     public void networkStopped(String reason) {
-        for (LiveSubscription s : subscriptions) {
-            s.disconnect(reason);
-        }
+        subscriptions.networkStopped(reason);
     }
 
     /** Ends every subscription; the network keeps running. */
     @Override
     public void close() {
-        for (LiveSubscription s : subscriptions) {
-            s.close();
-        }
+        subscriptions.closeAll();
     }
 
     private List<NodeRef> runningDatas() {

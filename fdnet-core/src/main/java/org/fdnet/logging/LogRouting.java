@@ -24,21 +24,38 @@ final class LogRouting {
     private final Path file;
     private final Level fileLevel;
     private final PrintStream terminal;
+    private final OldLogFiles oldFiles;
     private PrintStream out;
     private boolean openFailed;
 
     LogRouting(Path file, Level fileLevel, PrintStream terminal) {
+        this(file, fileLevel, terminal, null);
+    }
+
+    /** @param oldFiles deletes the folder's oldest log files before this one is created (null: none) */
+    LogRouting(Path file, Level fileLevel, PrintStream terminal, OldLogFiles oldFiles) {
         this.file = file;
         this.fileLevel = fileLevel;
         this.terminal = terminal;
+        this.oldFiles = oldFiles;
     }
 
     static LogRouting fromSystemProperties() {
         String f = System.getProperty("fdnet.logFile");
-        Path file = f != null ? Path.of(f) : Path.of(System.getProperty("user.home"), ".fdnet", "logs",
-                "fdnet-" + LocalDateTime.now().format(FILE_TIME) + "-" + ProcessHandle.current().pid() + ".log");
         Level level = "debug".equalsIgnoreCase(System.getProperty("fdnet.logLevel")) ? Level.DEBUG : Level.INFO;
-        return new LogRouting(file, level, System.err);
+        if (f != null) {
+            return new LogRouting(Path.of(f), level, System.err); // a file the user named: its folder is theirs
+        }
+        Path folder = Path.of(System.getProperty("user.home"), ".fdnet", "logs");
+        Path file = folder.resolve("fdnet-" + LocalDateTime.now().format(FILE_TIME) + "-" + ProcessHandle.current().pid()
+                + ".log");
+        int kept = Integer.getInteger("fdnet.logFilesKept", OldLogFiles.DEFAULT_KEPT);
+        if (kept < 1) {
+            System.err.println("fdnet: fdnet.logFilesKept must be at least 1, was " + kept + "; keeping the newest "
+                    + OldLogFiles.DEFAULT_KEPT);
+            kept = OldLogFiles.DEFAULT_KEPT;
+        }
+        return new LogRouting(file, level, System.err, new OldLogFiles(folder, kept, System.err));
     }
 
     boolean enabled(Level level) {
@@ -76,6 +93,9 @@ final class LogRouting {
         }
         try {
             Files.createDirectories(file.toAbsolutePath().getParent());
+            if (oldFiles != null) {
+                oldFiles.pruneBeforeNewFile();
+            }
             out = new PrintStream(Files.newOutputStream(file), false, StandardCharsets.UTF_8);
             terminal.println("fdnet: log file " + file);
         } catch (IOException | RuntimeException e) {

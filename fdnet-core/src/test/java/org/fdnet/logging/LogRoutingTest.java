@@ -60,4 +60,33 @@ class LogRoutingTest {
                 .contains("ORB run").contains("ORB still running");
         assertThat(terminal().split("cannot write", -1)).hasSize(2);
     }
+
+    @Test
+    void shouldKeepOnlyTheNewestLogFilesAndThoseOfRunningCommandsWhenANewOneIsCreated() throws Exception {
+        Path logs = Files.createDirectories(folder.resolve("logs"));
+        Process ended = new ProcessBuilder("true").start();
+        ended.waitFor();
+        long endedPid = ended.pid(); // the old runs' commands have ended
+        for (int i = 0; i < 25; i++) {
+            Path old = Files.writeString(logs.resolve(String.format("fdnet-20261123-0900%02d-%d.log", i, endedPid)), "run " + i);
+            Files.setLastModifiedTime(old, java.nio.file.attribute.FileTime.fromMillis(1_000_000L * (i + 1)));
+        }
+        Path notOurs = Files.writeString(logs.resolve("notes.txt"), "keep me");
+        Path running = Files.writeString(logs.resolve("fdnet-20261122-080000-" + ProcessHandle.current().pid() + ".log"),
+                "a logger still running");
+        Files.setLastModifiedTime(running, java.nio.file.attribute.FileTime.fromMillis(1));
+        Path file = logs.resolve("fdnet-20261123-100000-2.log");
+        LogRouting routing = new LogRouting(file, Level.INFO, terminal, new OldLogFiles(logs, 20, terminal));
+        routing.write(Level.INFO, "org.jacorb.orb", "ORB run", null);
+
+        try (var listed = Files.list(logs)) {
+            assertThat(listed.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".log")).sorted().toList())
+                    .hasSize(21).contains("fdnet-20261123-100000-2.log", "fdnet-20261123-090024-" + endedPid + ".log",
+                            "fdnet-20261123-090006-" + endedPid + ".log")
+                    .doesNotContain("fdnet-20261123-090005-" + endedPid + ".log");
+        }
+        assertThat(notOurs).exists();
+        assertThat(running).as("the oldest file, but its command (this JVM) still runs").exists();
+        assertThat(Files.readString(file)).contains("ORB run");
+    }
 }

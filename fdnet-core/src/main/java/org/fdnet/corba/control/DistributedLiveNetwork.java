@@ -6,11 +6,9 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.CopyOnWriteArrayList;
 import org.fdnet.control.LiveNetwork;
 import org.fdnet.control.LiveNetworkListener;
-import org.fdnet.control.LiveSubscription;
-import org.fdnet.control.NetworkDiff;
+import org.fdnet.control.LiveSubscriptions;
 import org.fdnet.control.SampledNetwork;
 import org.fdnet.corba.DeploymentPlan;
 import org.fdnet.corba.DistributedControl;
@@ -41,13 +39,14 @@ public final class DistributedLiveNetwork implements LiveNetwork, SampledNetwork
     private final DistributedControl control;
     private final NetworkDeployment deployment;
     private final Set<String> held = ConcurrentHashMap.newKeySet();
-    private final List<LiveSubscription> subscriptions = new CopyOnWriteArrayList<>();
+    private final LiveSubscriptions subscriptions;
     private final Map<NodeRef, Value> lastRead = new ConcurrentHashMap<>();
 
     public DistributedLiveNetwork(String name, DistributedControl control, NetworkDeployment deployment) {
         this.name = name;
         this.control = control;
         this.deployment = deployment;
+        this.subscriptions = new LiveSubscriptions(name, this);
     }
 
     @Override
@@ -69,11 +68,6 @@ public final class DistributedLiveNetwork implements LiveNetwork, SampledNetwork
     public Set<String> heldModules() {
         held.retainAll(deployment.plan().loaded()); // an unloaded module is no longer on hold
         return Set.copyOf(held);
-    }
-
-    @Override
-    public ChangeOutcome apply(String description, NetworkInfo base, NetworkInfo edited) {
-        return apply(description, NetworkDiff.between(base, edited).asEdit());
     }
 
     @Override
@@ -121,24 +115,17 @@ public final class DistributedLiveNetwork implements LiveNetwork, SampledNetwork
 
     @Override
     public AutoCloseable subscribe(LiveNetworkListener listener) {
-        LiveSubscription s = new LiveSubscription(name, this, listener, subscriptions::remove);
-        subscriptions.add(s);
-        s.start();
-        return s;
+        return subscriptions.open(listener);
     }
 
     /** Tells every subscriber that the run stopped, their last call. */
     public void networkStopped(String reason) {
-        for (LiveSubscription s : subscriptions) {
-            s.disconnect(reason);
-        }
+        subscriptions.networkStopped(reason);
     }
 
     @Override
     public void close() {
-        for (LiveSubscription s : subscriptions) {
-            s.close();
-        }
+        subscriptions.closeAll();
     }
 
     // ---------------------------------------------------------------- SampledNetwork

@@ -79,6 +79,8 @@ public final class ViewerClient implements AutoCloseable {
         }
         reader = new Thread(() -> readLoop(in), "fdnet-viewer-client");
         reader.setDaemon(true);
+        reader.setPriority(Thread.MAX_PRIORITY); // answers are waited for; on Linux only with -XX:ThreadPriorityPolicy=1
+
         reader.start();
     }
 

@@ -65,7 +65,7 @@ public final class EventCodec {
     }
 
     private static void head(FrameWriter w, int kind, NetworkEvent e) {
-        w.putByte(kind).putInt(e.sourceId()).putLong(e.time());
+        w.putEventHead(kind, e.sourceId(), e.time());
     }
 
     public static NetworkEvent read(Frame f) throws ProtocolException {

@@ -50,19 +50,27 @@ public final class FrameWriter {
         return putInt((int) v);
     }
 
-    /** {@code u32 byteLength, UTF-8 bytes}. ASCII (the common case) is copied without an encoder. */
+    /**
+     * {@code u32 byteLength, UTF-8 bytes}. ASCII (the common case) is copied in one pass, room reserved once;
+     * the first non-ASCII character falls back to the encoder.
+     */
     public FrameWriter putString(String s) {
         int n = s.length();
-        boolean ascii = true;
-        for (int i = 0; i < n && ascii; i++) {
-            ascii = s.charAt(i) < 0x80;
-        }
-        if (ascii) {
-            putInt(n);
-            ensure(n);
-            for (int i = 0; i < n; i++) {
-                buf[pos++] = (byte) s.charAt(i);
+        ensure(4 + n);
+        byte[] b = buf;
+        int start = pos + 4;
+        int i = 0;
+        while (i < n) {
+            char c = s.charAt(i);
+            if (c >= 0x80) {
+                break;
             }
+            b[start + i] = (byte) c;
+            i++;
+        }
+        if (i == n) {
+            putInt(n);
+            pos += n;
             return this;
         }
         byte[] bytes = s.getBytes(StandardCharsets.UTF_8);
@@ -70,6 +78,30 @@ public final class FrameWriter {
         ensure(bytes.length);
         System.arraycopy(bytes, 0, buf, pos, bytes.length);
         pos += bytes.length;
+        return this;
+    }
+
+    /** {@code u8 kind, i32 source, i64 time}: an event's head, room reserved once. */
+    public FrameWriter putEventHead(int kind, int source, long time) {
+        ensure(13);
+        byte[] b = buf;
+        int p = pos;
+        b[p] = (byte) kind;
+        b[p + 1] = (byte) (source >>> 24);
+        b[p + 2] = (byte) (source >>> 16);
+        b[p + 3] = (byte) (source >>> 8);
+        b[p + 4] = (byte) source;
+        int hi = (int) (time >>> 32);
+        int lo = (int) time;
+        b[p + 5] = (byte) (hi >>> 24);
+        b[p + 6] = (byte) (hi >>> 16);
+        b[p + 7] = (byte) (hi >>> 8);
+        b[p + 8] = (byte) hi;
+        b[p + 9] = (byte) (lo >>> 24);
+        b[p + 10] = (byte) (lo >>> 16);
+        b[p + 11] = (byte) (lo >>> 8);
+        b[p + 12] = (byte) lo;
+        pos = p + 13;
         return this;
     }
 

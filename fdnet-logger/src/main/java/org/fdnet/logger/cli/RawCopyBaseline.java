@@ -8,7 +8,10 @@ import java.nio.charset.StandardCharsets;
 import java.sql.Connection;
 import java.sql.SQLException;
 import java.sql.Statement;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicReference;
 import org.fdnet.event.ValueType;
 import org.fdnet.logger.store.DatabaseTarget;
 import org.postgresql.PGConnection;
@@ -40,33 +43,85 @@ final class RawCopyBaseline {
         try (Connection c = target.open(); Statement s = c.createStatement()) {
             s.execute("DROP TABLE IF EXISTS bench_baseline");
             s.execute("CREATE TABLE bench_baseline (LIKE datavalue_log INCLUDING ALL)");
-            c.setAutoCommit(false);
-            c.commit();
-            long time = System.currentTimeMillis() * 1000;
-            int largest = Arrays.stream(sizes).max().orElse(1);
-            long[] keys = new long[largest];
-            String sql = "COPY bench_baseline (sourceid, time, value, typevalue) FROM STDIN"
-                    + (format == Format.BINARY ? " (FORMAT binary)" : "");
             long t0 = System.nanoTime();
-            int b = 0;
-            for (long done = 0; done < rows; ) {
-                int n = (int) Math.min(sizes[Math.min(b++, sizes.length - 1)], rows - done);
-                for (int i = 0; i < n; i++) {
-                    keys[i] = ((done + i) % nodes) << 40 | i;
-                }
-                Arrays.sort(keys, 0, n);
-                byte[] bytes = format == Format.BINARY ? binary(keys, n, done, time) : text(keys, n, done, time);
-                CopyIn in = c.unwrap(PGConnection.class).getCopyAPI().copyIn(sql);
-                in.writeToCopy(bytes, 0, bytes.length);
-                in.endCopy();
-                c.commit();
-                done += n;
-            }
+            copy(c, rows, sizes, format, 0, 1);
             double rate = rows / ((System.nanoTime() - t0) / 1e9);
-            c.setAutoCommit(true);
             s.execute("DROP TABLE bench_baseline");
             return rate;
         }
+    }
+
+    /**
+     * Rows per second when {@code connections} connections COPY at once, each its own share of the nodes
+     * (disjoint key ranges) in sorted batches of {@code batch} rows, each committing its own batches: what
+     * PostgreSQL takes when more than one backend works on the table.
+     */
+    double runParallel(long rows, int batch, int connections) throws SQLException, InterruptedException {
+        try (Connection c = target.open(); Statement s = c.createStatement()) {
+            s.execute("DROP TABLE IF EXISTS bench_baseline");
+            s.execute("CREATE TABLE bench_baseline (LIKE datavalue_log INCLUDING ALL)");
+            List<Connection> open = new ArrayList<>();
+            try {
+                for (int i = 0; i < connections; i++) {
+                    open.add(target.open());
+                }
+                AtomicReference<SQLException> failure = new AtomicReference<>();
+                List<Thread> threads = new ArrayList<>();
+                long t0 = System.nanoTime();
+                for (int i = 0; i < connections; i++) {
+                    Connection mine = open.get(i);
+                    int part = i;
+                    Thread t = new Thread(() -> {
+                        try {
+                            copy(mine, rows / connections, new int[] {batch}, Format.TEXT, part, connections);
+                        } catch (SQLException e) {
+                            failure.compareAndSet(null, e);
+                        }
+                    }, "bench-copy-" + i);
+                    threads.add(t);
+                    t.start();
+                }
+                for (Thread t : threads) {
+                    t.join();
+                }
+                double rate = (rows / connections * connections) / ((System.nanoTime() - t0) / 1e9);
+                if (failure.get() != null) {
+                    throw failure.get();
+                }
+                s.execute("DROP TABLE bench_baseline");
+                return rate;
+            } finally {
+                for (Connection o : open) {
+                    o.close();
+                }
+            }
+        }
+    }
+
+    /** COPYs {@code rows} rows of the nodes {@code part, part + parts, ...} in sorted, committed batches. */
+    private void copy(Connection c, long rows, int[] sizes, Format format, int part, int parts) throws SQLException {
+        c.setAutoCommit(false);
+        long time = System.currentTimeMillis() * 1000;
+        int largest = Arrays.stream(sizes).max().orElse(1);
+        long[] keys = new long[largest];
+        int myNodes = Math.max(1, nodes / parts);
+        String sql = "COPY bench_baseline (sourceid, time, value, typevalue) FROM STDIN"
+                + (format == Format.BINARY ? " (FORMAT binary)" : "");
+        int b = 0;
+        for (long done = 0; done < rows; ) {
+            int n = (int) Math.min(sizes[Math.min(b++, sizes.length - 1)], rows - done);
+            for (int i = 0; i < n; i++) {
+                keys[i] = (((done + i) % myNodes) * parts + part) << 40 | i;
+            }
+            Arrays.sort(keys, 0, n);
+            byte[] bytes = format == Format.BINARY ? binary(keys, n, done, time) : text(keys, n, done, time);
+            CopyIn in = c.unwrap(PGConnection.class).getCopyAPI().copyIn(sql);
+            in.writeToCopy(bytes, 0, bytes.length);
+            in.endCopy();
+            c.commit();
+            done += n;
+        }
+        c.setAutoCommit(true);
     }
 
     private static byte[] text(long[] keys, int n, long done, long time) {

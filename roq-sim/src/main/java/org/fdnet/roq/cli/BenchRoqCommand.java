@@ -45,10 +45,10 @@ public final class BenchRoqCommand implements Callable<Integer> {
     @Option(names = "--no-logger", description = "(b) without recording (default: record with a logger started here)")
     boolean noLogger;
 
-    @Option(names = "--course", defaultValue = "flat", description = "course (default flat)")
+    @Option(names = "--course", defaultValue = "crossing", description = "course (default crossing, the demo's)")
     String course;
 
-    @Option(names = "--network", defaultValue = "networks/roq-walk.fdn", description = "network (default networks/roq-walk.fdn)")
+    @Option(names = "--network", defaultValue = "networks/roq-rubble.fdn", description = "network (default networks/roq-rubble.fdn, the demo's)")
     Path network;
 
     @Override

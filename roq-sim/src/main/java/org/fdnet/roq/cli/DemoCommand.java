@@ -41,7 +41,7 @@ import org.fdnet.corba.control.ControlPublication;
 import org.fdnet.runtime.cli.RunCommand;
 
 /**
- * {@code fdnet demo}: a RoQ network (default networks/roq-walk.fdn) on the real-time simulator, joined by the
+ * {@code fdnet demo}: a RoQ network (default networks/roq-rubble.fdn on the crossing course) on the real-time simulator, joined by the
  * real-time {@link SimBridge}; a progress line each second and a summary at the end, with the figures a
  * {@link DemoMeter} reads from the network (stability margin, probes, fragile cells). {@code --gui} shows it live in
  * a {@link RoqDemoWindow}; {@code --screenshot} renders that window's content to a PNG. With {@code --logger}
@@ -60,13 +60,13 @@ public final class DemoCommand implements Callable<Integer> {
     @Option(names = "--gui", description = "show the robot live in a window (top and side views, live figures)")
     boolean gui;
 
-    @Option(names = "--course", defaultValue = "flat", description = "course: flat, slope, rubble, fragile or a file (default flat)")
+    @Option(names = "--course", defaultValue = "crossing", description = "course: flat, slope, rubble, fragile, crossing or a file (default crossing)")
     String course;
 
     @Option(names = "--seed", defaultValue = "1", description = "seed of the sensors' noise (default 1)")
     long seed;
 
-    @Option(names = "--network", defaultValue = "networks/roq-walk.fdn", description = "network (default networks/roq-walk.fdn)")
+    @Option(names = "--network", defaultValue = "networks/roq-rubble.fdn", description = "network (default networks/roq-rubble.fdn)")
     Path network;
 
     @Option(names = "--logger", paramLabel = "HOST:PORT",

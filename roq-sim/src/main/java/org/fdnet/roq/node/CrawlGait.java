@@ -22,6 +22,10 @@ import org.fdnet.runtime.Value;
  * on. Rejected, it chooses a shorter step ({@code retreat} m, default 0.08, further back) and probes again, at
  * most {@code tries} times (default 3); the last foothold is stepped on whatever the verdict, and reported. If the
  * verdict disappears (Probing unloaded), it steps on without probing.
+ *
+ * <p>{@code stance} (m, default the standing pose's 0.43): how far each foot stands from the body's centre line.
+ * The simulator sets RoQ down in its standing pose; each leg moves to the stance while it swings, so after the
+ * first four steps the feet walk at the stance's width.
  */
 public class CrawlGait extends Relation {
     /** hr, fr, hl, fl. */
@@ -31,6 +35,9 @@ public class CrawlGait extends Relation {
 
     private final double[] feet = new double[3 * LEGS];
     private final double[] home = new double[3 * LEGS];
+    /** Each foot's distance from the body's centre line now (it moves to {@code stance} while the leg swings). */
+    private final double[] side = new double[LEGS];
+    private double stance;
     private double cycle;
     private double stride;
     private double clearance;
@@ -79,6 +86,11 @@ public class CrawlGait extends Relation {
             home[3 * leg] = foot[0];
             home[3 * leg + 1] = foot[1];
             home[3 * leg + 2] = -(height - FOOT_RADIUS);
+            side[leg] = Math.abs(foot[1]);
+        }
+        stance = p.doubleValue("stance", side[0]);
+        if (stance < HIP_POSITION[0][1] || stance > 0.5) {
+            throw p.invalid("stance", "must lie between " + HIP_POSITION[0][1] + " and 0.5 m, was " + stance);
         }
     }
 
@@ -105,12 +117,20 @@ public class CrawlGait extends Relation {
             u -= Math.floor(u);
             double x;
             double lift = 0;
+            double y = Math.signum(home[3 * leg + 1]) * side[leg];
             if (leg == probingLeg) {
                 x = stride / 2 - shorten[leg];
                 lift = clearance / 2;
                 inAir = true;
             } else if (u < SWING) {
                 double s = u / SWING;
+                if (side[leg] != stance) {
+                    double from = side[leg];
+                    y = Math.signum(home[3 * leg + 1]) * (from + (stance - from) * s);
+                    if (s > 0.95) {
+                        side[leg] = stance;
+                    }
+                }
                 double from = -stride / 2 - shorten[leg];
                 x = from + (stride / 2 - from) * s;
                 lift = clearance * Math.sin(Math.PI * s);
@@ -123,7 +143,7 @@ public class CrawlGait extends Relation {
                 x = stride / 2 - shorten[leg] - stride * s;
             }
             feet[3 * leg] = home[3 * leg] + x;
-            feet[3 * leg + 1] = home[3 * leg + 1];
+            feet[3 * leg + 1] = y;
             feet[3 * leg + 2] = home[3 * leg + 2] + lift;
         }
         c.output(0, Value.ofDoubles(feet));

@@ -10,19 +10,23 @@ import org.fdnet.runtime.Value;
 
 /**
  * Probe the ground — the thesis's "active movement sense": before the gait puts weight on a new foothold, the
- * swung foot is lowered until its sole reads {@code testForce} N (default 55: above a fragile cell's 40 N, below
- * the ~65 N a foot carries when three feet hold the robot) and held there. Ground that bears it (at least 90 % of
- * it) for {@code hold} s (default 0.25) is accepted. Ground that gives way — the sole force (a 30 ms running mean) stays below a
- * quarter of the test force for 50 ms after having passed 60 % of it (the cell broke under the probe, not under the robot), or the
- * foot went {@code maxPress} m (default 0.08) down without finding the force — is rejected, and the gait
- * chooses another foothold. While the probe presses, the balance keeps the body over the three other feet, so a
- * breaking cell costs the robot nothing.
+ * swung foot is lowered until its sole reads {@code testForce} N (default 55: above a fragile cell's 40 N, near
+ * what a foot carries when three feet hold the robot) and held there. Ground that bears it (at least 90 % of it)
+ * for {@code hold} s (default 0.25) is accepted. Ground that gives way is rejected, and the gait chooses another
+ * foothold: the sole force (a 30 ms running mean) stays below a quarter of the test force for 50 ms after having
+ * passed 60 % of it, or the foot had to go {@code sink} m (default 0.02) further down after first bearing 90 % of
+ * the test force (the cell broke under the probe and the foot went on to the bottom of its pit). Ground not found
+ * within {@code maxPress} m (default 0.08) is rejected too ("no footing"). While the probe presses, the balance
+ * ({@link KeepBalance} with its {@code press}) keeps the body over the three other feet, so a breaking cell costs
+ * the robot nothing.
  *
  * <p>Inputs, in Reader order: the gait phase {leg, in the air, probe attempt (a new positive number for every
  * foothold the gait waits on, 0 otherwise)} and the sole forces (4, N). Outputs, in Writer order: (0) the press:
  * an offset to add to the feet (12 numbers, only the probed foot's z is non-zero: how far it is lowered) and
- * (1) the verdict {leg, +1 accepted / −1 rejected, the attempt it answers};
- * the gait reads (1). Reports the footholds accepted and rejected.
+ * (1) the verdict {leg, +1 accepted / −1 rejected, the attempt it answers}; the gait reads (1). Outputs connected
+ * to Datas named {@code probes}, {@code fragile found} and {@code fragile avoided} get the counts (written when
+ * they change): footholds probed; footholds that gave way; of those, the ones the gait replaced at the same
+ * touchdown by a foothold that held. Reports every verdict.
  */
 public class ProbeGround extends Relation {
     private final double[] press = new double[3 * LEGS];
@@ -35,6 +39,11 @@ public class ProbeGround extends Relation {
     private static final double SMOOTHING = 0.03;
     /** How long the force must stay collapsed to call the ground given way, s. */
     private static final double GIVE_WAY = 0.05;
+    private static final String GAVE_WAY = "gave way";
+    /** The counters' Data names (outputs connected by these names get them). */
+    static final String PROBES = "probes";
+    static final String FRAGILE_FOUND = "fragile found";
+    static final String FRAGILE_AVOIDED = "fragile avoided";
 
     private double force = Double.NaN;
     private double lowSince = Double.NaN;
@@ -45,9 +54,17 @@ public class ProbeGround extends Relation {
     private double last = Double.NaN;
     private double heldSince = Double.NaN;
     private double peak;
+    /** How far the foot was lowered when its sole first bore 90 % of the test force, m (NaN before). */
+    private double found = Double.NaN;
+    private double sink;
     private boolean decided;
     private long accepted;
     private long rejected;
+    private long probes;
+    private long fragileFound;
+    private long fragileAvoided;
+    /** The leg whose foothold gave way at this touchdown, until it is accepted elsewhere or the gait steps on. */
+    private int gaveWay = -1;
 
     @Override
     protected void init(NodeParameters p) {
@@ -55,6 +72,10 @@ public class ProbeGround extends Relation {
         hold = p.doubleValue("hold", 0.25);
         pressSpeed = p.doubleValue("pressSpeed", 0.1);
         maxPress = p.doubleValue("maxPress", 0.08);
+        sink = p.doubleValue("sink", 0.02);
+        if (!(sink > 0) || sink > 0.1) {
+            throw p.invalid("sink", "must lie between 0 and 0.1 m, was " + sink);
+        }
         if (!(testForce > 0)) {
             throw p.invalid("testForce", "must be more than 0 N, was " + testForce);
         }
@@ -88,6 +109,7 @@ public class ProbeGround extends Relation {
         last = now;
         if (!announced && c.outputCount() > 1) {
             c.output(1, Value.ofDoubles(-1, 0, 0)); // "no verdict yet": tells the gait that probing is loaded
+            writeCounts(c);
             announced = true;
         }
         if (phase == null || soles == null || phase.length() < 3 || soles.length() < LEGS) {
@@ -120,11 +142,19 @@ public class ProbeGround extends Relation {
                 lowSince = now;
             }
             if (now - lowSince >= GIVE_WAY) {
-                decide(c, leg, -1, String.format(Locale.ROOT, "gave way: %.0f N after %.0f N", force, peak));
+                decide(c, leg, -1, String.format(Locale.ROOT, GAVE_WAY + ": %.0f N after %.0f N", force, peak));
                 return;
             }
         } else {
             lowSince = Double.NaN;
+        }
+        if (Double.isNaN(found) && force >= 0.9 * testForce) {
+            found = depth; // the ground is here
+        }
+        if (!Double.isNaN(found) && depth - found >= sink) {
+            decide(c, leg, -1, String.format(Locale.ROOT, GAVE_WAY + ": sank %.3f m after bearing %.0f N", depth - found,
+                    peak));
+            return;
         }
         if (Double.isNaN(heldSince) && force >= testForce) {
             heldSince = now; // the test force is reached: stop lowering, hold the foot where it is
@@ -147,6 +177,9 @@ public class ProbeGround extends Relation {
     }
 
     private void start(int leg, long attempt) {
+        if (leg != probing) {
+            gaveWay = -1; // a new touchdown: a fragile foothold left behind was not avoided by a probed one
+        }
         this.attempt = attempt;
         probing = leg;
         depth = 0;
@@ -154,6 +187,7 @@ public class ProbeGround extends Relation {
         lowSince = Double.NaN;
         force = Double.NaN;
         peak = 0;
+        found = Double.NaN;
         decided = false;
     }
 
@@ -162,17 +196,40 @@ public class ProbeGround extends Relation {
         if (verdict < 0) {
             depth = 0; // lift off ground that gave way; an accepted foot stays pressed until the gait steps on
         }
+        probes++;
         if (verdict > 0) {
             accepted++;
+            if (gaveWay == leg) {
+                fragileAvoided++; // the gait chose another foothold after this one gave way, and it holds
+                gaveWay = -1;
+            }
         } else {
             rejected++;
+            if (why.startsWith(GAVE_WAY)) {
+                fragileFound++;
+                gaveWay = leg;
+            }
         }
         writePress(c, leg);
         if (c.outputCount() > 1) {
             c.output(1, Value.ofDoubles(leg, verdict, attempt));
         }
+        writeCounts(c);
         c.report("leg " + leg + (verdict > 0 ? " accepted: " : " rejected: ") + why + "; " + accepted
                 + " footholds accepted, " + rejected + " rejected");
+    }
+
+    private void writeCounts(RelationContext c) {
+        writeCount(c, PROBES, probes);
+        writeCount(c, FRAGILE_FOUND, fragileFound);
+        writeCount(c, FRAGILE_AVOIDED, fragileAvoided);
+    }
+
+    private static void writeCount(RelationContext c, String name, long count) {
+        int i = c.outputIndex(name);
+        if (i >= 0) {
+            c.output(i, Value.of(count));
+        }
     }
 
     private void writePress(RelationContext c, int leg) {

@@ -27,7 +27,7 @@ import java.util.Locale;
  */
 public final class CourseLoader {
     /** Built-in courses, resources under {@code org/fdnet/roq/sim/courses/NAME.course}. */
-    public static final List<String> BUILT_IN = List.of("flat", "slope", "rubble", "fragile");
+    public static final List<String> BUILT_IN = List.of("flat", "slope", "rubble", "fragile", "crossing");
 
     private CourseLoader() {
     }

@@ -19,13 +19,22 @@ import org.fdnet.runtime.Value;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
-/** networks/roq-rubble.fdn on the simulated RoQ, stepped, on the fragile course (rubble with fragile cells). */
+/**
+ * networks/roq-rubble.fdn on the simulated RoQ, stepped: flat ground with and without a fragile cell, and the
+ * {@code crossing} course (rubble with bands of fragile cells in the feet's lanes).
+ */
 @Timeout(120)
 class RoqRubbleTest {
     private static final Path RUBBLE = Path.of("..", "networks", "roq-rubble.fdn");
 
     /** What a run saw, counted each 10 ms. */
-    record Run(double distance, boolean fallen, int rejected, int accepted, int broken, int brokenWhileLoaded) {
+    /**
+     * @param cellsFoundByProbe  ground truth: cells that broke while a probe pressed and whose foothold the probe then
+     *                           rejected
+     * @param cellsAvoided       of those, the ones where the same leg's next probe (a shorter step) was accepted
+     */
+    record Run(double distance, boolean fallen, int rejected, int accepted, int broken, int brokenWhileLoaded,
+               long fragileFound, long fragileAvoided, int cellsFoundByProbe, int cellsAvoided) {
     }
 
     static Run run(String course, int seconds, String... unloaded) throws Exception {
@@ -48,16 +57,29 @@ class RoqRubbleTest {
             int broken = 0;
             int brokenWhileLoaded = 0;
             boolean fallen = false;
+            long brokeDuringAttempt = -1;
+            int foundLeg = -1;
+            int cellsFoundByProbe = 0;
+            int cellsAvoided = 0;
             for (int t = 0; t < seconds * 100; t++) {
                 bridge.run(10);
                 Value verdict = value(net, "probe verdict", "Probing");
                 if (verdict != null && verdict.length() == 3 && (long) verdict.element(2) != lastAttempt
                         && verdict.element(2) > 0) {
                     lastAttempt = (long) verdict.element(2);
+                    int leg = (int) verdict.element(0);
                     if (verdict.element(1) < 0) {
                         rejected++;
+                        if (lastAttempt == brokeDuringAttempt) {
+                            cellsFoundByProbe++;
+                            foundLeg = leg;
+                        }
                     } else {
                         accepted++;
+                        if (leg == foundLeg) {
+                            cellsAvoided++;
+                        }
+                        foundLeg = -1;
                     }
                 }
                 int nowBroken = bridge.lastSnapshot().brokenCellCount();
@@ -66,14 +88,23 @@ class RoqRubbleTest {
                     boolean probing = phase != null && phase.length() == 3 && phase.element(2) > 0;
                     if (!probing) {
                         brokenWhileLoaded += nowBroken - broken;
+                    } else {
+                        brokeDuringAttempt = (long) phase.element(2);
                     }
                     broken = nowBroken;
                 }
                 fallen |= value(net, "fallen", "main").asBoolean();
             }
             return new Run(bridge.lastSnapshot().groundTruthBodyPosition(0) - x0, fallen, rejected, accepted, broken,
-                    brokenWhileLoaded);
+                    brokenWhileLoaded, count(net, "fragile found"), count(net, "fragile avoided"), cellsFoundByProbe,
+                    cellsAvoided);
         }
+    }
+
+    /** A Probing counter, -1 when module Probing is not loaded. */
+    private static long count(RuntimeNetwork net, String node) {
+        Value v = value(net, node, "Probing");
+        return v == null ? -1 : Math.round(v.asDouble());
     }
 
     private static Value value(RuntimeNetwork net, String node, String module) {
@@ -84,15 +115,36 @@ class RoqRubbleTest {
         }
     }
 
-    /** Flat ground with a fragile cell (40 N) right where the first swung foot, hind-right, comes down. */
+    /**
+     * Flat ground with a fragile cell (40 N) right where the first swung foot, hind-right, comes down: roq-rubble's
+     * stride 0.2 m ahead of where it stands, 0.30 m right of the centre line (its stance).
+     */
     private static Course cellUnderTheFirstFoothold() {
         double[] foot = new double[3];
         RoqGeometry.footInBody(3, RoqGeometry.STANDING_POSE[0], RoqGeometry.STANDING_POSE[1],
                 RoqGeometry.STANDING_POSE[2], foot);
         Course flat = Course.flat();
-        double stride = 0.15;
+        double stride = 0.2;
+        double stance = 0.30;
         return flat.withFragileCells(List.of(new FragileCell(flat.startX() + foot[0] + stride / 2,
-                flat.startY() + foot[1], 0.24, 0.24, 0.03, 40)));
+                flat.startY() - stance, 0.24, 0.24, 0.03, 40)));
+    }
+
+    @Test
+    void shouldCrossTwoMetresOfRubbleFindingAndAvoidingAFragileCellWithoutFalling() throws Exception {
+        Run r = run("crossing", 100);
+        assertThat(r.fallen()).as("fallen").isFalse();
+        // the rubble begins 0.6 m around the start; the front feet stand 0.35 m ahead of the body's centre
+        assertThat(r.distance()).as("metres walked: the front feet crossed 2 m of rubble").isGreaterThanOrEqualTo(2.25);
+        assertThat(r.fragileFound()).as("footholds that gave way under the probe (Probing/fragile found)")
+                .isGreaterThanOrEqualTo(1);
+        assertThat(r.fragileAvoided()).as("of them, avoided by a shorter step that held (Probing/fragile avoided)")
+                .isGreaterThanOrEqualTo(1);
+        assertThat(r.cellsFoundByProbe()).as("cells that broke under a probe which then rejected the foothold ("
+                + r.broken() + " broken, " + r.brokenWhileLoaded() + " of them under a loaded foot)")
+                .isGreaterThanOrEqualTo(1);
+        assertThat(r.cellsAvoided()).as("of those, avoided: the same leg's next, shorter step was accepted")
+                .isGreaterThanOrEqualTo(1);
     }
 
     @Test
@@ -123,7 +175,7 @@ class RoqRubbleTest {
 
     @Test
     void shouldBreakThroughAFragileCellWhenModuleProbingIsUnloaded() throws Exception {
-        Run r = run("fragile", 90, "Probing");
+        Run r = run("crossing", 60, "Probing");
         assertThat(r.rejected()).isZero();
         assertThat(r.brokenWhileLoaded()).as("cells broken under a loaded foot").isGreaterThanOrEqualTo(1);
     }

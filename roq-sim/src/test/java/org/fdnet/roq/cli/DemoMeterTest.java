@@ -3,7 +3,11 @@ package org.fdnet.roq.cli;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.concurrent.TimeUnit;
+import org.fdnet.event.DataValueEvent;
+import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.event.RelationValueEvent;
+import org.fdnet.event.ValueType;
+import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
@@ -58,6 +62,24 @@ class DemoMeterTest {
             assertThat(f.fragileAvoided()).isEqualTo(1);
             assertThat(f.margin()).as("no report yet").isNaN();
             assertThat(f.progressLine()).contains("margin n/a", "probes 7", "fragile found 2 avoided 1");
+        }
+    }
+
+    @Test
+    void shouldPreferTheValuesOfTheMarginDataToTheReportsLeavingOutItsInitialValue() throws Exception {
+        DemoMeter meter = new DemoMeter(null);
+        meter.accept(new NodeNamedEvent(5, 1, NodeKind.DATA, new NodeRef("Balance", "margin")));
+        meter.accept(new DataValueEvent(5, 1, ValueType.DOUBLE, "0.0")); // the Data's initial value, not a margin
+        meter.accept(new DataValueEvent(5, 2, ValueType.DOUBLE, "0.081"));
+        meter.accept(new RelationValueEvent(3, 3, "margin 0.500 m"));
+        meter.accept(new DataValueEvent(5, 4, ValueType.DOUBLE, "-0.012"));
+        meter.accept(new DataValueEvent(5, 5, ValueType.DOUBLE, "0.064"));
+        meter.accept(new DataValueEvent(6, 6, ValueType.DOUBLE, "-0.9"));
+        try (RuntimeNetwork net = RuntimeNetwork.start(plain(), RuntimeOptions.defaults())) {
+            DemoFigures f = meter.figures(net, new SensorSnapshot(), 0, new LoopStatistics(), false);
+            assertThat(f.margin()).isEqualTo(0.064);
+            assertThat(f.smallestMargin()).as("smallest of the margin Data's values after its initial one")
+                    .isEqualTo(-0.012);
         }
     }
 

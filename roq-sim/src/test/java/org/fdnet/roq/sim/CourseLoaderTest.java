@@ -57,7 +57,7 @@ class CourseLoaderTest {
         Path missing = dir.resolve("nope.course");
         assertThatThrownBy(() -> CourseLoader.resolve(missing.toString()))
                 .isInstanceOf(CourseFormatException.class)
-                .hasMessageStartingWith(missing + ": no such course file (built-in courses: flat, slope, rubble, fragile)");
+                .hasMessageStartingWith(missing + ": no such course file (built-in courses: flat, slope, rubble, fragile, crossing)");
     }
 
     @Test

@@ -43,7 +43,7 @@ class DemoLiveWalkthroughTest {
             throws Exception {
         int controlPort = FdnetChildProcess.freePort();
         try (FdnetChildProcess demo = FdnetChildProcess.start("demo", List.of("-Duser.home=" + home),
-                List.of("demo", "--for", "30s", "--network", RunOnSimulatorTest.WALK, "--control-port",
+                List.of("demo", "--for", "30s", "--network", RunOnSimulatorTest.WALK, "--course", "flat", "--control-port",
                         Integer.toString(controlPort)), "logger for viewers:", 60_000);
              RemoteLiveNetwork roq = RemoteLiveNetwork.attach("127.0.0.1:" + controlPort, null)) {
             String printed = demo.output().stream().filter(l -> l.startsWith("logger for viewers:")).findFirst()

@@ -103,7 +103,7 @@ public final class DistributedControl implements NetworkControl {
     }
 
     /** The host a running node runs on, or {@code null}. */
-    String homeOf(NodeRef node) {
+    public String homeOf(NodeRef node) {
         return deployment.plan().placement().get(node);
     }
 

@@ -1,29 +1,21 @@
 package org.fdnet.corba.control;
 
-import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
-import org.fdnet.control.LiveNetwork;
-import org.fdnet.control.LiveNetworkListener;
-import org.fdnet.control.LiveSubscriptions;
+import org.fdnet.control.ControlledLiveNetwork;
 import org.fdnet.control.SampledNetwork;
-import org.fdnet.corba.DeploymentPlan;
 import org.fdnet.corba.DistributedControl;
 import org.fdnet.corba.IdlMapping;
 import org.fdnet.corba.NetworkDeployment;
 import org.fdnet.corba.ValueCodec;
 import org.fdnet.corba.idl.Host;
-import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
-import org.fdnet.netinfo.NodeInfo;
-import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.ChangeListener;
 import org.fdnet.runtime.ChangeOutcome;
-import org.fdnet.runtime.NetworkEdit;
 import org.fdnet.runtime.Value;
 import org.omg.CORBA.SystemException;
 
@@ -34,24 +26,16 @@ import org.omg.CORBA.SystemException;
  * are sampled by reading each running Data from its home host ({@code Host.read}) ten times a second; a Data is
  * reported when its value differs from the previous sample.
  */
-public final class DistributedLiveNetwork implements LiveNetwork, SampledNetwork {
-    private final String name;
+public final class DistributedLiveNetwork extends ControlledLiveNetwork implements SampledNetwork {
     private final DistributedControl control;
     private final NetworkDeployment deployment;
     private final Set<String> held = ConcurrentHashMap.newKeySet();
-    private final LiveSubscriptions subscriptions;
     private final Map<NodeRef, Value> lastRead = new ConcurrentHashMap<>();
 
     public DistributedLiveNetwork(String name, DistributedControl control, NetworkDeployment deployment) {
-        this.name = name;
+        super(name, control);
         this.control = control;
         this.deployment = deployment;
-        this.subscriptions = new LiveSubscriptions(name, this);
-    }
-
-    @Override
-    public String name() {
-        return name;
     }
 
     @Override
@@ -71,23 +55,8 @@ public final class DistributedLiveNetwork implements LiveNetwork, SampledNetwork
     }
 
     @Override
-    public ChangeOutcome apply(String description, NetworkEdit edit) {
-        return control.apply(description, edit);
-    }
-
-    @Override
-    public ChangeOutcome load(String module) {
-        return control.load(module);
-    }
-
-    @Override
-    public ChangeOutcome unload(String module) {
-        return control.unload(module);
-    }
-
-    @Override
     public ChangeOutcome hold(String module) {
-        ChangeOutcome o = control.hold(module);
+        ChangeOutcome o = super.hold(module);
         if (o.executed()) {
             held.add(module);
         }
@@ -96,7 +65,7 @@ public final class DistributedLiveNetwork implements LiveNetwork, SampledNetwork
 
     @Override
     public ChangeOutcome resume(String module) {
-        ChangeOutcome o = control.resume(module);
+        ChangeOutcome o = super.resume(module);
         if (o.executed()) {
             held.remove(module);
         }
@@ -104,28 +73,8 @@ public final class DistributedLiveNetwork implements LiveNetwork, SampledNetwork
     }
 
     @Override
-    public ChangeOutcome setParameter(NodeRef node, String parameter, String value) {
-        return control.setParameter(node, parameter, value);
-    }
-
-    @Override
-    public ChangeOutcome send(NodeRef data, String text) {
-        return control.send(data, text);
-    }
-
-    @Override
-    public AutoCloseable subscribe(LiveNetworkListener listener) {
-        return subscriptions.open(listener);
-    }
-
-    /** Tells every subscriber that the run stopped, their last call. */
-    public void networkStopped(String reason) {
-        subscriptions.networkStopped(reason);
-    }
-
-    @Override
-    public void close() {
-        subscriptions.closeAll();
+    protected SampledNetwork sampled() {
+        return this;
     }
 
     // ---------------------------------------------------------------- SampledNetwork
@@ -142,7 +91,7 @@ public final class DistributedLiveNetwork implements LiveNetwork, SampledNetwork
 
     @Override
     public Value value(NodeRef data) {
-        String home = homeOf(data);
+        String home = control.homeOf(data);
         Host host = home == null ? null : deployment.host(home);
         if (host == null) {
             return null;
@@ -162,30 +111,7 @@ public final class DistributedLiveNetwork implements LiveNetwork, SampledNetwork
 
     @Override
     public List<NodeRef> runningDatas() {
-        List<NodeRef> datas = new ArrayList<>();
-        NetworkInfo now = snapshot();
-        Set<String> loaded = loadedModules();
-        for (ModuleInfo m : now.modules()) {
-            if (loaded.contains(m.name())) {
-                for (NodeInfo n : m.nodes()) {
-                    if (n.kind() == NodeKind.DATA) {
-                        datas.add(new NodeRef(m.name(), n.name()));
-                    }
-                }
-            }
-        }
-        return datas;
+        return datasOf(snapshot(), loadedModules());
     }
 
-    private String homeOf(NodeRef data) {
-        DeploymentPlan plan = deployment.plan();
-        for (String h : plan.hosts()) {
-            for (DeploymentPlan.Placed p : plan.shareOf(h).nodes()) {
-                if (p.ref().equals(data)) {
-                    return h;
-                }
-            }
-        }
-        return null;
-    }
 }

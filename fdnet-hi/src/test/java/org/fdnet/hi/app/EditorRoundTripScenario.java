@@ -320,37 +320,12 @@ public final class EditorRoundTripScenario {
         return find(window, AbstractButton.class, name);
     }
 
-    /** The showing component of that type whose name (or, for buttons, text) is {@code key}. */
     private static <T extends Component> T find(Container root, Class<T> type, String key) {
-        for (Component c : root.getComponents()) {
-            if (type.isInstance(c) && c.isShowing() && (key.equals(c.getName())
-                    || c instanceof AbstractButton b && key.equals(b.getText()))) {
-                return type.cast(c);
-            }
-            if (c instanceof Container inner) {
-                T found = find(inner, type, key);
-                if (found != null) {
-                    return found;
-                }
-            }
-        }
-        return null;
+        return ShowingComponents.find(root, type, key);
     }
 
     private static <T> T edt(Callable<T> query) throws Exception {
-        AtomicReference<T> result = new AtomicReference<>();
-        AtomicReference<Exception> failure = new AtomicReference<>();
-        SwingUtilities.invokeAndWait(() -> {
-            try {
-                result.set(query.call());
-            } catch (Exception e) {
-                failure.set(e);
-            }
-        });
-        if (failure.get() != null) {
-            throw failure.get();
-        }
-        return result.get();
+        return org.fdnet.hi.live.LiveTestNetwork.edt(query);
     }
 
     private void waitFor(String what, BooleanSupplier condition) throws Exception {

@@ -371,21 +371,8 @@ public final class LiveEditorScenario {
         robot.waitForIdle();
     }
 
-    /** The showing component of that type whose name (or, for buttons, text) is {@code key}; any, for {@code null}. */
     private static <T extends Component> T find(Container root, Class<T> type, String key) {
-        for (Component c : root.getComponents()) {
-            if (type.isInstance(c) && c.isShowing() && (key == null || key.equals(c.getName())
-                    || c instanceof AbstractButton b && key.equals(b.getText()))) {
-                return type.cast(c);
-            }
-            if (c instanceof Container inner) {
-                T found = find(inner, type, key);
-                if (found != null) {
-                    return found;
-                }
-            }
-        }
-        return null;
+        return ShowingComponents.find(root, type, key);
     }
 
     private static <T> T edt(Callable<T> query) throws Exception {

@@ -1,12 +1,6 @@
 package org.fdnet.control;
 
-import static org.assertj.core.api.Assertions.assertThat;
-
 import java.util.List;
-import java.util.Map;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.NetworkInfo;
@@ -16,9 +10,11 @@ import org.fdnet.netinfo.Parameter;
 import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.RuntimeOptions;
-import org.fdnet.runtime.Value;
+import org.fdnet.testing.HeardFromNetwork;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import static org.assertj.core.api.Assertions.assertThat;
+
 
 @Timeout(60)
 class LocalLiveNetworkTest {
@@ -43,60 +39,12 @@ class LocalLiveNetworkTest {
         return n;
     }
 
-    /** What a listener heard, in queues a test can wait on. */
-    static final class Recorder implements LiveNetworkListener {
-        final BlockingQueue<ChangeOutcome> changes = new LinkedBlockingQueue<>();
-        final BlockingQueue<Map<NodeRef, Value>> samples = new LinkedBlockingQueue<>();
-        final List<String> disconnects = new CopyOnWriteArrayList<>();
-
-        @Override
-        public void changeSettled(ChangeOutcome outcome) {
-            changes.add(outcome);
-        }
-
-        @Override
-        public void valuesSampled(Map<NodeRef, Value> latest) {
-            samples.add(latest);
-        }
-
-        @Override
-        public void disconnected(String reason) {
-            disconnects.add(reason);
-        }
-
-        /** Waits (at most 10 s) for a sample that contains {@code data}. */
-        boolean sampleWith(NodeRef data) throws InterruptedException {
-            return sampleWith(data, 10_000);
-        }
-
-        boolean sampleWith(NodeRef data, long millis) throws InterruptedException {
-            long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(millis);
-            while (System.nanoTime() < deadline) {
-                Map<NodeRef, Value> s = samples.poll(200, TimeUnit.MILLISECONDS);
-                if (s != null && s.containsKey(data)) {
-                    return true;
-                }
-            }
-            return false;
-        }
-
-        ChangeOutcome changeAbout(String text) throws InterruptedException {
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-            while (System.nanoTime() < deadline) {
-                ChangeOutcome o = changes.poll(200, TimeUnit.MILLISECONDS);
-                if (o != null && o.description().contains(text)) {
-                    return o;
-                }
-            }
-            return null;
-        }
-    }
 
     @Test
     void shouldApplyTheDifferenceOfAnEditAndRefuseOneThatNoLongerFits() throws Exception {
         try (RuntimeNetwork net = RuntimeNetwork.start(network(), RuntimeOptions.defaults().workerThreads(2));
              LocalLiveNetwork live = new LocalLiveNetwork("live-test", net.controller())) {
-            Recorder heard = new Recorder();
+            HeardFromNetwork heard = new HeardFromNetwork();
             live.subscribe(heard);
             NetworkInfo base = live.snapshot();
             NetworkInfo edited = base.copy();
@@ -121,7 +69,7 @@ class LocalLiveNetworkTest {
     void shouldStopAndRestartValuesWhenAModuleIsUnloadedAndLoaded() throws Exception {
         try (RuntimeNetwork net = RuntimeNetwork.start(network(), RuntimeOptions.defaults().workerThreads(2));
              LocalLiveNetwork live = new LocalLiveNetwork("live-test", net.controller())) {
-            Recorder heard = new Recorder();
+            HeardFromNetwork heard = new HeardFromNetwork();
             AutoCloseable subscription = live.subscribe(heard);
             assertThat(heard.sampleWith(ref("Wave/signal"))).as("Wave/signal sampled").isTrue();
 
@@ -140,7 +88,7 @@ class LocalLiveNetworkTest {
     void shouldTellASubscriberWhatTheNetworkBuiltByItselfAndThatItStopped() throws Exception {
         try (RuntimeNetwork net = RuntimeNetwork.start(network(), RuntimeOptions.defaults().workerThreads(2));
              LocalLiveNetwork live = new LocalLiveNetwork("live-test", net.controller())) {
-            Recorder heard = new Recorder();
+            HeardFromNetwork heard = new HeardFromNetwork();
             live.subscribe(heard);
             NetworkInfo base = live.snapshot();
             NetworkInfo edited = base.copy();

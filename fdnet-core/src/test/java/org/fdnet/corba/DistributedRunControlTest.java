@@ -1,25 +1,21 @@
 package org.fdnet.corba;
 
-import static org.assertj.core.api.Assertions.assertThat;
-
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
-import org.fdnet.control.LiveNetworkListener;
 import org.fdnet.corba.control.RemoteLiveNetwork;
 import org.fdnet.corba.control.RunFiles;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.ChangeOutcome;
-import org.fdnet.runtime.Value;
+import org.fdnet.testing.HeardFromNetwork;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import static org.assertj.core.api.Assertions.assertThat;
+
 
 /**
  * A distributed run registers its control object in its naming service under the network's name: a tool finds it
@@ -65,7 +61,7 @@ class DistributedRunControlTest {
 
         assertThat(network.name()).isEqualTo("two-robots");
         assertThat(network.snapshot().node(new NodeRef("main", "ChooseSector"))).isNotNull();
-        Heard heard = new Heard();
+        HeardFromNetwork heard = new HeardFromNetwork();
         network.subscribe(heard);
         assertThat(heard.sampleWith(MAP)).as("the flyer's Map, read from its host").isTrue();
 
@@ -97,35 +93,4 @@ class DistributedRunControlTest {
         assertThat(heard.disconnects.get(0)).contains("two-robots");
     }
 
-    static final class Heard implements LiveNetworkListener {
-        final BlockingQueue<ChangeOutcome> changes = new LinkedBlockingQueue<>();
-        final BlockingQueue<Map<NodeRef, Value>> samples = new LinkedBlockingQueue<>();
-        final List<String> disconnects = new CopyOnWriteArrayList<>();
-
-        @Override
-        public void changeSettled(ChangeOutcome outcome) {
-            changes.add(outcome);
-        }
-
-        @Override
-        public void valuesSampled(Map<NodeRef, Value> latest) {
-            samples.add(latest);
-        }
-
-        @Override
-        public void disconnected(String reason) {
-            disconnects.add(reason);
-        }
-
-        boolean sampleWith(NodeRef data) throws InterruptedException {
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(15);
-            while (System.nanoTime() < deadline) {
-                Map<NodeRef, Value> s = samples.poll(100, TimeUnit.MILLISECONDS);
-                if (s != null && s.containsKey(data)) {
-                    return true;
-                }
-            }
-            return false;
-        }
-    }
 }

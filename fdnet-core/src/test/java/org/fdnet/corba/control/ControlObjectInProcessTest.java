@@ -1,16 +1,8 @@
 package org.fdnet.corba.control;
 
-import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.assertThatThrownBy;
-
 import java.nio.file.Path;
-import java.util.List;
 import java.util.Map;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
-import org.fdnet.control.LiveNetworkListener;
 import org.fdnet.control.LocalLiveNetwork;
 import org.fdnet.control.NetworkUnreachableException;
 import org.fdnet.netinfo.ConnectionInfo;
@@ -22,11 +14,15 @@ import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.RuntimeOptions;
 import org.fdnet.runtime.Value;
+import org.fdnet.testing.HeardFromNetwork;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
 
 /** The control object and its client in one JVM (two ORBs): the mapping of every call, without process start-up. */
 @Timeout(60)
@@ -60,26 +56,6 @@ class ControlObjectInProcessTest {
         return n;
     }
 
-    static final class Heard implements LiveNetworkListener {
-        final BlockingQueue<ChangeOutcome> changes = new LinkedBlockingQueue<>();
-        final BlockingQueue<Map<NodeRef, Value>> samples = new LinkedBlockingQueue<>();
-        final List<String> disconnects = new CopyOnWriteArrayList<>();
-
-        @Override
-        public void changeSettled(ChangeOutcome outcome) {
-            changes.add(outcome);
-        }
-
-        @Override
-        public void valuesSampled(Map<NodeRef, Value> latest) {
-            samples.add(latest);
-        }
-
-        @Override
-        public void disconnected(String reason) {
-            disconnects.add(reason);
-        }
-    }
 
     @Test
     void shouldCarryEveryCallAndEveryNotificationThroughCorba() throws Exception {
@@ -90,7 +66,7 @@ class ControlObjectInProcessTest {
                 assertThat(remote.name()).isEqualTo("in-process");
                 assertThat(remote.snapshot()).isEqualTo(net.controller().snapshot());
                 assertThat(remote.loggerViewerAddress()).as("a run that knows no logger says none").isEmpty();
-                Heard heard = new Heard();
+                HeardFromNetwork heard = new HeardFromNetwork();
                 remote.subscribe(heard);
 
                 assertThat(remote.send(ref("In"), "4").executed()).isTrue();

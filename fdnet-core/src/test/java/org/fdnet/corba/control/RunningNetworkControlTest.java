@@ -1,15 +1,8 @@
 package org.fdnet.corba.control;
 
-import static org.assertj.core.api.Assertions.assertThat;
-
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Map;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
-import org.fdnet.control.LiveNetworkListener;
 import org.fdnet.control.NetworkUnreachableException;
 import org.fdnet.corba.FdnetChildProcess;
 import org.fdnet.netinfo.ConnectionInfo;
@@ -19,13 +12,15 @@ import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.Parameter;
 import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.runtime.ChangeOutcome;
-import org.fdnet.runtime.Value;
 import org.fdnet.testing.CliRun;
+import org.fdnet.testing.HeardFromNetwork;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import static org.assertj.core.api.Assertions.assertThat;
+
 
 /**
  * The path users take: {@code fdnet run} in a process of its own publishes its control object on
@@ -85,48 +80,6 @@ class RunningNetworkControlTest {
         }
     }
 
-    static final class Heard implements LiveNetworkListener {
-        final BlockingQueue<ChangeOutcome> changes = new LinkedBlockingQueue<>();
-        final BlockingQueue<Map<NodeRef, Value>> samples = new LinkedBlockingQueue<>();
-        final List<String> disconnects = new CopyOnWriteArrayList<>();
-
-        @Override
-        public void changeSettled(ChangeOutcome outcome) {
-            changes.add(outcome);
-        }
-
-        @Override
-        public void valuesSampled(Map<NodeRef, Value> latest) {
-            samples.add(latest);
-        }
-
-        @Override
-        public void disconnected(String reason) {
-            disconnects.add(reason);
-        }
-
-        boolean sampleWith(NodeRef data, long millis) throws InterruptedException {
-            long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(millis);
-            while (System.nanoTime() < deadline) {
-                Map<NodeRef, Value> s = samples.poll(100, TimeUnit.MILLISECONDS);
-                if (s != null && s.containsKey(data)) {
-                    return true;
-                }
-            }
-            return false;
-        }
-
-        ChangeOutcome changeAbout(String text) throws InterruptedException {
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(15);
-            while (System.nanoTime() < deadline) {
-                ChangeOutcome o = changes.poll(100, TimeUnit.MILLISECONDS);
-                if (o != null && o.description().contains(text)) {
-                    return o;
-                }
-            }
-            return null;
-        }
-    }
 
     @Test
     void shouldTellAToolWhereViewersReachTheRunsLogger() {
@@ -162,7 +115,7 @@ class RunningNetworkControlTest {
 
     @Test
     void shouldStopValuesWhenAModuleIsUnloadedAndLetThemFlowWhenItIsLoadedAgain() throws Exception {
-        Heard heard = new Heard();
+        HeardFromNetwork heard = new HeardFromNetwork();
         network.subscribe(heard);
         assertThat(heard.sampleWith(SIGNAL, 15_000)).as("Wave/signal sampled while Wave runs").isTrue();
 
@@ -183,7 +136,7 @@ class RunningNetworkControlTest {
 
     @Test
     void shouldTellASubscriberWhatTheNetworkBuiltByItself() throws Exception {
-        Heard heard = new Heard();
+        HeardFromNetwork heard = new HeardFromNetwork();
         network.subscribe(heard);
         NetworkInfo base = network.snapshot();
         NetworkInfo edited = base.copy();
@@ -200,7 +153,7 @@ class RunningNetworkControlTest {
 
     @Test
     void shouldSayDisconnectedWithTheReasonWhenTheNetworkDiesAndRefuseEveryCall() throws Exception {
-        Heard heard = new Heard();
+        HeardFromNetwork heard = new HeardFromNetwork();
         network.subscribe(heard);
         assertThat(heard.sampleWith(SIGNAL, 15_000)).isTrue();
 

@@ -380,19 +380,10 @@ public final class LiveEditorScenario {
     }
 
     private void waitFor(String what, BooleanSupplier condition) throws Exception {
-        long deadline = System.nanoTime() + 20_000_000_000L;
-        while (System.nanoTime() < deadline) {
-            if (edt(condition::getAsBoolean)) {
-                return;
-            }
-            Thread.sleep(50);
-        }
-        throw new AssertionError("timed out waiting for: " + what + " (status: " + edt(() -> window.status().message()) + ")");
+        ShowingComponents.waitFor(window, what, condition);
     }
 
     private static void check(boolean holds, String what) {
-        if (!holds) {
-            throw new AssertionError("does not hold: " + what);
-        }
+        ShowingComponents.check(holds, what);
     }
 }

@@ -2,9 +2,11 @@ package org.fdnet.hi.app;
 
 import java.awt.Component;
 import java.awt.Container;
+import java.util.function.BooleanSupplier;
 import javax.swing.AbstractButton;
+import org.fdnet.hi.live.LiveTestNetwork;
 
-/** How GUI scenarios find a window's parts: by type and by name (or, for buttons, their text). Call on the Swing thread. */
+/** How GUI scenarios find an editor window's parts (by type and name, or a button's text) and wait for its state. */
 final class ShowingComponents {
     private ShowingComponents() {
     }
@@ -24,5 +26,24 @@ final class ShowingComponents {
             }
         }
         return null;
+    }
+
+    /** Waits (at most 20 s), checking on the Swing thread, until {@code condition} holds; fails naming {@code what}. */
+    static void waitFor(HiWindow window, String what, BooleanSupplier condition) throws Exception {
+        long deadline = System.nanoTime() + 20_000_000_000L;
+        while (System.nanoTime() < deadline) {
+            if (LiveTestNetwork.edt(condition::getAsBoolean)) {
+                return;
+            }
+            Thread.sleep(50);
+        }
+        throw new AssertionError("timed out waiting for: " + what + " (status: "
+                + LiveTestNetwork.edt(() -> window.status().message()) + ")");
+    }
+
+    static void check(boolean holds, String what) {
+        if (!holds) {
+            throw new AssertionError("does not hold: " + what);
+        }
     }
 }

@@ -72,6 +72,8 @@ class ServantsAcrossHostsTest {
                 + Arrays.toString(crawler.nodes()) + "\nFLYER:\n" + String.join("\n", cluster.output("flyer")));
         assertThat(crawler.nodes()).contains(FILTERED.toString());
         assertThat(flyer.nodes()).doesNotContain(FILTER.toString(), FILTERED.toString());
+        // the crawler runs them once it committed; the coordinator's plan follows when every host has
+        await(() -> control.snapshot().node(FILTER) != null, () -> "the coordinator's definition has no " + FILTER);
         NetworkInfo running = control.snapshot();
         assertThat(running.node(FILTER).host()).isEqualTo("crawler");
         assertThat(running.connectionsOf(FILTER)).extracting(c -> c.connection().toString())

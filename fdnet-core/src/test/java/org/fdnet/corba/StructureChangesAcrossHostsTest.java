@@ -175,7 +175,10 @@ class StructureChangesAcrossHostsTest {
         assertThat(added.executed()).as(added.toString()).isTrue();
         await(() -> Arrays.asList(flyer.nodes()).contains("main/Gyro filter"), () -> "flyer runs " + nodes(flyer)
                 + "\nCRAWLER:\n" + String.join("\n", cluster.output("crawler")));
-        assertThat(control.snapshot().node(new NodeRef("main", "Gyro filter")).host()).isEqualTo("flyer");
+        // the flyer runs the filter once it committed; the coordinator's plan follows when every host has
+        NodeRef filter = new NodeRef("main", "Gyro filter");
+        await(() -> control.snapshot().node(filter) != null, () -> "the coordinator's definition has no " + filter);
+        assertThat(control.snapshot().node(filter).host()).isEqualTo("flyer");
     }
 
     private static String nodes(Host host) {

@@ -291,7 +291,7 @@ public final class BenchLoggerCommand implements Callable<Integer> {
             long to = end.getAsLong();
             long g0 = gcCount();
             long q0 = System.nanoTime();
-            found = viewer.history(new int[] {node}, to - TEN_SECONDS_US, to).size();
+            found = viewer.historyColumns(new int[] {node}, to - TEN_SECONDS_US, to).size(); // a viewer's plot path
             long micros = (System.nanoTime() - q0) / 1000;
             h.recordValue(micros);
             slow.add(micros, gcCount() != g0);

@@ -203,10 +203,7 @@ public final class ViewerClient implements AutoCloseable {
                 Request r = open.get(f.getInt());
                 int n = f.getCount(EventCodec.MIN_EVENT_BYTES);
                 if (r != null && r.columns != null) {
-                    r.columns.reserve(n);
-                    for (int i = 0; i < n; i++) {
-                        r.columns.append(f);
-                    }
+                    r.columns.appendAll(f, n);
                     return;
                 }
                 for (int i = 0; i < n; i++) {

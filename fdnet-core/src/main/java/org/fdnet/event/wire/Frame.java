@@ -107,6 +107,19 @@ public final class Frame {
         return payload.arrayOffset() + payload.position();
     }
 
+    /** Passes over {@code n} bytes that the caller read from {@link #array()} itself. */
+    public void skip(int n) throws ProtocolException {
+        if (n < 0 || n > payload.remaining()) {
+            throw new ProtocolException("malformed " + type + " frame: " + n + " bytes expected, " + payload.remaining() + " left");
+        }
+        payload.position(payload.position() + n);
+    }
+
+    /** The bytes left in the payload. */
+    public int remainingBytes() {
+        return payload.remaining();
+    }
+
     /** The frame's bytes (not a copy; offsets from {@link #skipString}). */
     public byte[] array() {
         return payload.array();

@@ -106,7 +106,9 @@ class HistoryColumnsTest {
         w.writeTo(out);
         Frame f = new FrameReader(new ByteArrayInputStream(out.toByteArray()), Protocol.DEFAULT_MAX_FRAME_BYTES).read();
         f.getInt();
-        HistoryColumns c = read(f);
+        HistoryColumns c = new HistoryColumns();
+        c.appendAll(f, f.getCount(EventCodec.MIN_EVENT_BYTES));
+        f.expectEnd();
 
         assertThat(sizes).containsExactly(21, 22, 21, 21, 21, 21, 34, 20, 20, 24);
         assertThat(c.events()).isEqualTo(events);

@@ -58,21 +58,17 @@ final class SenderConnection extends Connection {
             frames++;
             switch (f.type()) {
                 case LIST_NODES -> listNodes(f.getInt(), f.getString());
-                case HISTORY -> {
+                case HISTORY, HISTORY_NUMBERS -> {
                     int id = f.getInt();
                     int[] nodes = nodeIds(f);
                     long from = f.getLong();
                     long to = f.getLong();
                     f.expectEnd();
-                    history(id, nodes, from, to);
-                }
-                case HISTORY_NUMBERS -> {
-                    int id = f.getInt();
-                    int[] nodes = nodeIds(f);
-                    long from = f.getLong();
-                    long to = f.getLong();
-                    f.expectEnd();
-                    historyNumbers(id, nodes, from, to);
+                    if (f.type() == MessageType.HISTORY) {
+                        history(id, nodes, from, to);
+                    } else {
+                        historyNumbers(id, nodes, from, to);
+                    }
                 }
                 case MONITOR -> {
                     int[] nodes = nodeIds(f);

@@ -23,6 +23,7 @@ import org.fdnet.event.wire.Frame;
 import org.fdnet.event.wire.FrameReader;
 import org.fdnet.event.wire.FrameWriter;
 import org.fdnet.event.wire.Hello;
+import org.fdnet.event.wire.HistoryColumns;
 import org.fdnet.event.wire.LoggedNode;
 import org.fdnet.event.wire.MessageType;
 import org.fdnet.event.wire.Protocol;
@@ -38,6 +39,7 @@ import org.slf4j.LoggerFactory;
  * <pre>
  *   nodes("Arm/")  ─LIST_NODES─▶ logger ─NODE_LIST─▶ List&lt;LoggedNode&gt;
  *   history(ids, from, to) ─HISTORY─▶ logger ─HISTORY_CHUNK*, HISTORY_END─▶ events in time order
+ *   historyColumns(ids, from, to) ─HISTORY_NUMBERS─▶ logger ─(the same, numbers as f64)─▶ HistoryColumns
  *   monitor(ids) ─MONITOR─▶ logger ─MONITOR_EVENTS (live)─▶ listener
  * </pre>
  */
@@ -55,7 +57,13 @@ public final class ViewerClient implements AutoCloseable {
 
     private static final class Request {
         final List<Object> items = new ArrayList<>();
+        /** Set for a history asked for as columns: the chunks are read into it, no object per event. */
+        final HistoryColumns columns;
         final CompletableFuture<List<Object>> done = new CompletableFuture<>();
+
+        Request(HistoryColumns columns) {
+            this.columns = columns;
+        }
     }
 
     public ViewerClient(String host, int port, String name, Consumer<NetworkEvent> monitorListener) throws IOException {
@@ -87,7 +95,7 @@ public final class ViewerClient implements AutoCloseable {
     /** Nodes whose name matches: {@code ""} all, {@code Node} any module, {@code Module/Node} exactly. */
     public List<LoggedNode> nodes(String filter) throws IOException {
         int id = requests.incrementAndGet();
-        List<Object> items = call(id, w -> w.begin(MessageType.LIST_NODES).putInt(id).putString(filter));
+        List<Object> items = call(id, new Request(null), w -> w.begin(MessageType.LIST_NODES).putInt(id).putString(filter));
         List<LoggedNode> nodes = new ArrayList<>(items.size());
         items.forEach(o -> nodes.add((LoggedNode) o));
         return nodes;
@@ -95,17 +103,31 @@ public final class ViewerClient implements AutoCloseable {
 
     /** Every event of the nodes with {@code from <= time <= to}, in time order (cache and database merged). */
     public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws IOException {
+        List<Object> items = askHistory(MessageType.HISTORY, sourceIds, from, to, new Request(null));
+        List<NetworkEvent> events = new ArrayList<>(items.size());
+        items.forEach(o -> events.add((NetworkEvent) o));
+        return events;
+    }
+
+    /**
+     * The same answer as {@link #history}, as columns: times, source ids and numeric values without an object
+     * or a String per event, the logger sending numbers as numbers (HISTORY_NUMBERS) — the path for plotting.
+     */
+    public HistoryColumns historyColumns(int[] sourceIds, long from, long to) throws IOException {
+        Request r = new Request(new HistoryColumns());
+        askHistory(MessageType.HISTORY_NUMBERS, sourceIds, from, to, r);
+        return r.columns;
+    }
+
+    private List<Object> askHistory(MessageType type, int[] sourceIds, long from, long to, Request r) throws IOException {
         int id = requests.incrementAndGet();
-        List<Object> items = call(id, w -> {
-            w.begin(MessageType.HISTORY).putInt(id).putInt(sourceIds.length);
+        return call(id, r, w -> {
+            w.begin(type).putInt(id).putInt(sourceIds.length);
             for (int s : sourceIds) {
                 w.putInt(s);
             }
             w.putLong(from).putLong(to);
         });
-        List<NetworkEvent> events = new ArrayList<>(items.size());
-        items.forEach(o -> events.add((NetworkEvent) o));
-        return events;
     }
 
     /** Starts streaming the nodes' new events to the listener. */
@@ -143,8 +165,7 @@ public final class ViewerClient implements AutoCloseable {
         }
     }
 
-    private List<Object> call(int id, FrameBuilder b) throws IOException {
-        Request r = new Request();
+    private List<Object> call(int id, Request r, FrameBuilder b) throws IOException {
         open.put(id, r);
         send(b);
         try {
@@ -181,6 +202,10 @@ public final class ViewerClient implements AutoCloseable {
             case HISTORY_CHUNK -> {
                 Request r = open.get(f.getInt());
                 int n = f.getCount(EventCodec.MIN_EVENT_BYTES);
+                if (r != null && r.columns != null) {
+                    r.columns.appendAll(f, n);
+                    return;
+                }
                 for (int i = 0; i < n; i++) {
                     NetworkEvent e = EventCodec.read(f);
                     if (r != null) {

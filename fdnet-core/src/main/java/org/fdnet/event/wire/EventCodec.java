@@ -18,12 +18,22 @@ import org.fdnet.netinfo.NodeRef;
  *   <li>3 command: {@code string sourceType, u8 command (NetworkCommand ordinal), string paramsId, string paramsType}</li>
  *   <li>4 named: {@code u8 nodeKind (1 data, 2 relation), string module, string node}</li>
  * </ul>
+ * and, only in answers to {@link MessageType#HISTORY_NUMBERS} ({@link #writeNumeric}), a Data's value whose text is
+ * exactly what Java prints for its number:
+ * <ul>
+ *   <li>5 double value: {@code f64 value} (type DOUBLE, text {@code Double.toString(value)})</li>
+ *   <li>6 long value: {@code i64 value}, |value| ≤ 2^53 (type LONG, text {@code Long.toString(value)})</li>
+ * </ul>
  */
 public final class EventCodec {
     static final int DATA = 1;
     static final int RELATION = 2;
     static final int COMMAND = 3;
     static final int NAMED = 4;
+    static final int DOUBLE_VALUE = 5;
+    static final int LONG_VALUE = 6;
+    /** Longs up to this magnitude go as numbers: a viewer holds them as doubles, exactly. */
+    private static final long EXACT_IN_DOUBLE = 1L << 53;
     /** The smallest encoded event: kind, source, time and one empty string. */
     public static final int MIN_EVENT_BYTES = 1 + 4 + 8 + 4;
 
@@ -49,6 +59,67 @@ public final class EventCodec {
             w.putByte(n.kind() == NodeKind.DATA ? 1 : 2)
                     .putString(n.name().module()).putString(n.name().node());
         }
+    }
+
+    /**
+     * As {@link #write}, except that a Data's {@code DOUBLE} or {@code LONG} value whose text is what Java prints
+     * for its number goes as that number (8 bytes, nothing to parse, the text made again exactly on demand).
+     * For answers to {@link MessageType#HISTORY_NUMBERS} only: the logger encodes an event this way once and
+     * keeps the bytes.
+     */
+    public static void writeNumeric(FrameWriter w, NetworkEvent event) {
+        if (event instanceof DataValueEvent d && d.type() == ValueType.DOUBLE) {
+            double v = canonicalDouble(d.value());
+            if (v == v || "NaN".equals(d.value())) {
+                w.putEventHead(DOUBLE_VALUE, d.sourceId(), d.time()).putLong(Double.doubleToRawLongBits(v));
+                return;
+            }
+        } else if (event instanceof DataValueEvent d && d.type() == ValueType.LONG) {
+            String text = d.value();
+            if (looksLikeLong(text)) {
+                try {
+                    long v = Long.parseLong(text);
+                    if (Long.toString(v).equals(text) && v >= -EXACT_IN_DOUBLE && v <= EXACT_IN_DOUBLE) {
+                        w.putEventHead(LONG_VALUE, d.sourceId(), d.time()).putLong(v);
+                        return;
+                    }
+                } catch (NumberFormatException notALong) {
+                    // sent as text, as written
+                }
+            }
+        }
+        write(w, event);
+    }
+
+    /** The number whose {@code Double.toString} is exactly {@code text}; NaN when there is none (or it is NaN). */
+    private static double canonicalDouble(String text) {
+        if (text.isEmpty() || text.length() > 32) {
+            return Double.NaN;
+        }
+        char c = text.charAt(0);
+        if (c != '-' && (c < '0' || c > '9') && c != 'N' && c != 'I') {
+            return Double.NaN;
+        }
+        try {
+            double v = Double.parseDouble(text);
+            return Double.toString(v).equals(text) ? v : Double.NaN;
+        } catch (NumberFormatException notADouble) {
+            return Double.NaN;
+        }
+    }
+
+    private static boolean looksLikeLong(String text) {
+        int n = text.length();
+        if (n == 0 || n > 20) {
+            return false;
+        }
+        for (int i = 0; i < n; i++) {
+            char c = text.charAt(i);
+            if ((c < '0' || c > '9') && !(i == 0 && c == '-')) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** The same event with another source id: the logger maps a core's ids to global ones. */

@@ -79,6 +79,52 @@ public final class Frame {
         return s;
     }
 
+    /** The next byte, left where it is. */
+    public int peekByte() throws ProtocolException {
+        if (!payload.hasRemaining()) {
+            throw malformed("u8");
+        }
+        return payload.get(payload.position()) & 0xFF;
+    }
+
+    /**
+     * Passes over a string ({@code u32 byteLength, bytes}) and answers where its bytes are in
+     * {@link #array()}: a reader that keeps the bytes makes no String.
+     */
+    public int skipString() throws ProtocolException {
+        int n = getInt();
+        if (n < 0 || n > payload.remaining()) {
+            throw new ProtocolException("malformed " + type + " frame: string of " + n
+                    + " bytes with " + payload.remaining() + " bytes left");
+        }
+        int at = payload.arrayOffset() + payload.position();
+        payload.position(payload.position() + n);
+        return at;
+    }
+
+    /** Where the next byte is in {@link #array()}: the end of a string just skipped. */
+    public int arrayPosition() {
+        return payload.arrayOffset() + payload.position();
+    }
+
+    /** Passes over {@code n} bytes that the caller read from {@link #array()} itself. */
+    public void skip(int n) throws ProtocolException {
+        if (n < 0 || n > payload.remaining()) {
+            throw new ProtocolException("malformed " + type + " frame: " + n + " bytes expected, " + payload.remaining() + " left");
+        }
+        payload.position(payload.position() + n);
+    }
+
+    /** The bytes left in the payload. */
+    public int remainingBytes() {
+        return payload.remaining();
+    }
+
+    /** The frame's bytes (not a copy; offsets from {@link #skipString}). */
+    public byte[] array() {
+        return payload.array();
+    }
+
     /** Fails if bytes are left over: a frame must be exactly as long as its content. */
     public void expectEnd() throws ProtocolException {
         if (payload.hasRemaining()) {

@@ -105,6 +105,24 @@ public final class FrameWriter {
         return this;
     }
 
+    /** Where the next byte goes: a mark for {@link #bytesSince}. */
+    public int position() {
+        return pos;
+    }
+
+    /** A copy of what was put since {@code mark} (from {@link #position}): an encoding to keep and reuse. */
+    public byte[] bytesSince(int mark) {
+        return Arrays.copyOfRange(buf, mark, pos);
+    }
+
+    /** Bytes already encoded (e.g. an event kept from {@link #bytesSince}), copied as they are. */
+    public FrameWriter putBytes(byte[] bytes) {
+        ensure(bytes.length);
+        System.arraycopy(bytes, 0, buf, pos, bytes.length);
+        pos += bytes.length;
+        return this;
+    }
+
     /** Writes the frame built since {@link #begin}; the stream is not flushed. */
     public void writeTo(OutputStream out) throws IOException {
         int length = pos - 4;

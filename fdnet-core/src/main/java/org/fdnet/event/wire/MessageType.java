@@ -27,7 +27,12 @@ public enum MessageType {
     /** viewer → logger: request id, name filter ({@code ""}, {@code Node} or {@code Module/Node}). */
     LIST_NODES(26),
     /** logger → viewer: request id, nodes. */
-    NODE_LIST(27);
+    NODE_LIST(27),
+    /**
+     * viewer → logger: as {@link #HISTORY}; the answer's events may come as numbers ({@link EventCodec#writeNumeric}):
+     * a plot's history without text to parse.
+     */
+    HISTORY_NUMBERS(28);
 
     private final int code;
 

@@ -5,6 +5,9 @@
  * <pre>
  *   NetworkEvent ──EventCodec──▶ FrameWriter ──u32 length · u8 type · payload──▶ socket
  *   socket ──FrameReader (length ≤ max, whole frame or "truncated")──▶ Frame ──EventCodec──▶ NetworkEvent
+ *
+ *   a plot's history (HISTORY_NUMBERS): logger ──EventCodec.writeNumeric, bytes kept per cached event──▶
+ *       HISTORY_CHUNK ──HistoryColumns.appendAll──▶ times[] · sources[] · numbers[] (text, events on demand)
  * </pre>
  *
  * Every read is bounds-checked and fails with a {@link org.fdnet.event.wire.ProtocolException} that names

@@ -307,6 +307,26 @@ public final class EventCache {
     public record CacheAnswer(List<NetworkEvent> events, boolean complete) {
     }
 
+    /**
+     * As {@link #history}, the cached events themselves (their wire bytes kept for the next viewer): what a
+     * sender answers from when {@code complete}.
+     */
+    public CachedAnswer cachedHistory(int sourceId, long from, long to, boolean sourceSeenFromStart) {
+        ArrayList<CachedEvent> out = new ArrayList<>(0);
+        long statesEvicted = states.rangeCached(sourceId, from, to, out);
+        int stateCount = out.size();
+        long commandsEvicted = commands.rangeCached(sourceId, from, to, out);
+        if (stateCount > 0 && out.size() > stateCount) {
+            out.sort(Comparator.comparingLong(CachedEvent::time));
+        }
+        boolean covered = sourceSeenFromStart && statesEvicted < from && commandsEvicted < from;
+        return new CachedAnswer(out, covered);
+    }
+
+    /** Cached events of a node in a range, and whether they are all there are. */
+    public record CachedAnswer(List<CachedEvent> events, boolean complete) {
+    }
+
     public CacheStatus status() {
         lock.lock();
         try {

@@ -38,6 +38,12 @@ class EventContainer {
         return t == null ? Long.MIN_VALUE : t.range(from, to, out);
     }
 
+    /** As {@link #range}, the cached events themselves. */
+    long rangeCached(int sourceId, long from, long to, ArrayList<CachedEvent> out) {
+        NodeTimeline t = timeline(sourceId, false);
+        return t == null ? Long.MIN_VALUE : t.rangeCached(from, to, out);
+    }
+
     /** Lets the node's committed, unmonitored head events go; returns the bytes freed. */
     long evict(int sourceId) {
         NodeTimeline t = timeline(sourceId, false);

@@ -96,6 +96,19 @@ final class NodeTimeline {
         return evictedUpTo;
     }
 
+    /** As {@link #range}, the cached events themselves: a sender reuses their kept wire bytes. */
+    synchronized long rangeCached(long from, long to, ArrayList<CachedEvent> out) {
+        int first = lowerBound(from);
+        int end = firstAfter(to);
+        if (end > first) {
+            out.ensureCapacity(out.size() + end - first);
+            for (int i = first; i < end; i++) {
+                out.add(items[i]);
+            }
+        }
+        return evictedUpTo;
+    }
+
     private int firstAfter(long time) {
         int lo = head;
         int hi = tail;

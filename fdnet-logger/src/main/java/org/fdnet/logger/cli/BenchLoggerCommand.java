@@ -309,7 +309,7 @@ public final class BenchLoggerCommand implements Callable<Integer> {
             long to = end.getAsLong();
             long g0 = gcCount();
             long q0 = System.nanoTime();
-            found = viewer.history(new int[] {node}, to - TEN_SECONDS_US, to).size();
+            found = viewer.historyColumns(new int[] {node}, to - TEN_SECONDS_US, to).size(); // a viewer's plot path
             long micros = (System.nanoTime() - q0) / 1000;
             h.recordValue(micros);
             slow.add(micros, gcCount() != g0);
@@ -317,6 +317,24 @@ public final class BenchLoggerCommand implements Callable<Integer> {
         Thread.currentThread().setPriority(Thread.NORM_PRIORITY);
         queryFigure("ViewerClient over TCP", when, h, found, unwrittenBefore, cache.unwrittenCount(), gcMillis() - gcBefore,
                 targetMs, slow);
+        eventsBaseline(when, viewer, node, end);
+    }
+
+    /** The same query as one object and String per event (ViewerClient.history, the path before columns). */
+    private void eventsBaseline(String when, ViewerClient viewer, int node, LongSupplier end) throws Exception {
+        Histogram h = new Histogram(3);
+        int found = 0;
+        Thread.currentThread().setPriority(Thread.MAX_PRIORITY);
+        for (int i = 0; i < 1000; i++) {
+            long to = end.getAsLong();
+            long q0 = System.nanoTime();
+            found = viewer.history(new int[] {node}, to - TEN_SECONDS_US, to).size();
+            h.recordValue((System.nanoTime() - q0) / 1000);
+        }
+        Thread.currentThread().setPriority(Thread.NORM_PRIORITY);
+        report.info("[4] baseline: the same query as events (ViewerClient.history), " + when + ": p50 / p99 / max",
+                String.format("%.2f / %.2f / %.1f ms (%,d events)", h.getValueAtPercentile(50) / 1000.0,
+                        h.getValueAtPercentile(99) / 1000.0, h.getMaxValue() / 1000.0, found));
     }
 
     private void queryFigure(String how, String when, Histogram h, int found, long unwrittenBefore, long unwrittenAfter,

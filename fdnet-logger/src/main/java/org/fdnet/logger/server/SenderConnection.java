@@ -9,6 +9,7 @@ import org.fdnet.event.wire.ErrorCode;
 import org.fdnet.event.wire.EventCodec;
 import org.fdnet.event.wire.Frame;
 import org.fdnet.event.wire.FrameReader;
+import org.fdnet.event.wire.FrameWriter;
 import org.fdnet.event.wire.Hello;
 import org.fdnet.event.wire.LoggedNode;
 import org.fdnet.event.wire.MessageType;
@@ -20,7 +21,9 @@ import org.slf4j.LoggerFactory;
 
 /**
  * A viewer's connection to the sender server: LIST_NODES (names), HISTORY (cache and database merged, sent
- * in chunks), MONITOR / UNMONITOR (live stream through a {@link MonitorStream}).
+ * in chunks), HISTORY_NUMBERS (the same, numbers as numbers: a plot's path; from the cache it sends each event's
+ * kept bytes, {@link CachedEvent#wire()}, encoding an event only the first time any viewer asks for it),
+ * MONITOR / UNMONITOR (live stream through a {@link MonitorStream}).
  */
 final class SenderConnection extends Connection {
     private static final Logger LOG = LoggerFactory.getLogger(SenderConnection.class);
@@ -55,13 +58,17 @@ final class SenderConnection extends Connection {
             frames++;
             switch (f.type()) {
                 case LIST_NODES -> listNodes(f.getInt(), f.getString());
-                case HISTORY -> {
+                case HISTORY, HISTORY_NUMBERS -> {
                     int id = f.getInt();
                     int[] nodes = nodeIds(f);
                     long from = f.getLong();
                     long to = f.getLong();
                     f.expectEnd();
-                    history(id, nodes, from, to);
+                    if (f.type() == MessageType.HISTORY) {
+                        history(id, nodes, from, to);
+                    } else {
+                        historyNumbers(id, nodes, from, to);
+                    }
                 }
                 case MONITOR -> {
                     int[] nodes = nodeIds(f);
@@ -108,7 +115,46 @@ final class SenderConnection extends Connection {
         });
     }
 
+    /**
+     * A plot's history: numbers as numbers ({@link EventCodec#writeNumeric}). From the cache, each event's bytes
+     * are encoded once and kept, so the answer is array copies; else cache and database merged, encoded now.
+     */
+    private void historyNumbers(int id, int[] nodes, long from, long to) throws IOException {
+        List<CachedEvent> cached = viewers.fromCache(nodes, from, to);
+        if (cached == null) {
+            sendHistory(id, events(nodes, from, to), EventCodec::writeNumeric);
+            return;
+        }
+        for (int start = 0; start < cached.size(); start += Protocol.MAX_EVENTS_PER_FRAME) {
+            List<CachedEvent> chunk = cached.subList(start, Math.min(cached.size(), start + Protocol.MAX_EVENTS_PER_FRAME));
+            sendUnflushed(w -> {
+                w.begin(MessageType.HISTORY_CHUNK).putInt(id).putInt(chunk.size());
+                chunk.forEach(e -> putKept(w, e));
+            });
+        }
+        send(w -> w.begin(MessageType.HISTORY_END).putInt(id).putLong(cached.size()));
+    }
+
     private void history(int id, int[] nodes, long from, long to) throws IOException {
+        sendHistory(id, events(nodes, from, to), EventCodec::write);
+    }
+
+    private interface EventEncoding {
+        void put(FrameWriter w, NetworkEvent e);
+    }
+
+    private void sendHistory(int id, List<NetworkEvent> events, EventEncoding encoding) throws IOException {
+        for (int start = 0; start < events.size(); start += Protocol.MAX_EVENTS_PER_FRAME) {
+            List<NetworkEvent> chunk = events.subList(start, Math.min(events.size(), start + Protocol.MAX_EVENTS_PER_FRAME));
+            sendUnflushed(w -> {
+                w.begin(MessageType.HISTORY_CHUNK).putInt(id).putInt(chunk.size());
+                chunk.forEach(e -> encoding.put(w, e));
+            });
+        }
+        send(w -> w.begin(MessageType.HISTORY_END).putInt(id).putLong(events.size()));
+    }
+
+    private List<NetworkEvent> events(int[] nodes, long from, long to) throws IOException {
         List<NetworkEvent> events;
         try {
             events = viewers.history(nodes, from, to);
@@ -117,14 +163,7 @@ final class SenderConnection extends Connection {
             refuse(ErrorCode.INTERNAL, "database unavailable for history: " + e.getMessage());
             throw new IOException("history failed", e);
         }
-        for (int start = 0; start < events.size(); start += Protocol.MAX_EVENTS_PER_FRAME) {
-            List<NetworkEvent> chunk = events.subList(start, Math.min(events.size(), start + Protocol.MAX_EVENTS_PER_FRAME));
-            sendUnflushed(w -> {
-                w.begin(MessageType.HISTORY_CHUNK).putInt(id).putInt(chunk.size());
-                chunk.forEach(e -> EventCodec.write(w, e));
-            });
-        }
-        send(w -> w.begin(MessageType.HISTORY_END).putInt(id).putLong(events.size()));
+        return events;
     }
 
     /** Sends monitored events (from the stream's thread). */
@@ -133,6 +172,21 @@ final class SenderConnection extends Connection {
             w.begin(MessageType.MONITOR_EVENTS).putInt(events.size());
             events.forEach(e -> EventCodec.write(w, e.event()));
         });
+    }
+
+    /**
+     * The cached event's bytes as {@link EventCodec#writeNumeric} encodes them, encoded and kept the first time a
+     * viewer asks for it: later answers (the next query of a plot's window, another viewer) are array copies.
+     */
+    private static void putKept(FrameWriter w, CachedEvent e) {
+        byte[] kept = e.wire();
+        if (kept != null) {
+            w.putBytes(kept);
+            return;
+        }
+        int mark = w.position();
+        EventCodec.writeNumeric(w, e.event());
+        e.keepWire(w.bytesSince(mark));
     }
 
     @Override

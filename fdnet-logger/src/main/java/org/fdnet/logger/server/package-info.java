@@ -7,6 +7,8 @@
  *   core   ─TCP 5555─▶ TcpServer ─▶ ConnectionFactory ─▶ ReceiverConnection ─EVENTS─▶ EventCache
  *                                                           ◀─ACK(seq)── writer commits (RunProgress)
  *   viewer ─TCP 5556─▶ TcpServer ─▶ ConnectionFactory ─▶ SenderConnection ─HISTORY─▶ ViewerService (cache + DB)
+ *                                                           ├─HISTORY_NUMBERS─▶ ViewerService.fromCache ─▶
+ *                                                           │     each CachedEvent's kept bytes (encoded once)
  *                                                           └─MONITOR─▶ MonitorStream ◀─offer── EventCache
  *   bad frame → ERROR + close that connection only (logged); states: waiting → activated → stopped
  * </pre>

@@ -8,6 +8,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import org.fdnet.event.DataValueEvent;
 import org.fdnet.event.NetworkEvent;
+import org.fdnet.event.wire.HistoryColumns;
 
 /**
  * Every series of one viewer, keyed by the logger's source id: a Data holding one number is one series,
@@ -49,21 +50,47 @@ public final class PlotData {
             ignored.incrementAndGet();
             return;
         }
+        List<Series> parts = components(s, numbers.length);
+        for (int i = 0; i < numbers.length; i++) {
+            parts.get(i).append(event.time(), numbers[i]);
+        }
+        accepted.incrementAndGet();
+    }
+
+    /**
+     * Adds a history answer: numbers the client already read go straight to their series; any other value
+     * (a vector, a boolean) goes through {@link #accept(NetworkEvent)} as an event.
+     */
+    public void accept(HistoryColumns history) {
+        for (int i = 0; i < history.size(); i++) {
+            if (!history.hasNumber(i)) {
+                accept(history.event(i));
+                continue;
+            }
+            Source s = sources.get(history.sourceId(i));
+            if (s == null) {
+                ignored.incrementAndGet();
+                continue;
+            }
+            components(s, 1).get(0).append(history.time(i), history.number(i));
+            accepted.incrementAndGet();
+        }
+    }
+
+    /** The source's series, at least {@code count} of them (created as components appear). */
+    private List<Series> components(Source s, int count) {
         List<Series> parts = s.components();
-        if (parts.size() < numbers.length) {
+        if (parts.size() < count) {
             synchronized (s) {
-                while (parts.size() < numbers.length) {
-                    Series series = new Series(numbers.length == 1 && parts.isEmpty() ? s.name()
+                while (parts.size() < count) {
+                    Series series = new Series(count == 1 && parts.isEmpty() ? s.name()
                             : s.name() + "[" + parts.size() + "]", s.unit());
                     parts.add(series);
                     all.add(series);
                 }
             }
         }
-        for (int i = 0; i < numbers.length; i++) {
-            parts.get(i).append(event.time(), numbers[i]);
-        }
-        accepted.incrementAndGet();
+        return parts;
     }
 
     /** Every series, in the order they appeared. */

@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.function.Consumer;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.client.ViewerClient;
+import org.fdnet.event.wire.HistoryColumns;
 import org.fdnet.event.wire.LoggedNode;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.viewer.data.NodeSelection;
@@ -21,7 +22,7 @@ import org.fdnet.viewer.data.PlotData;
  * <pre>
  *   watch(selection) ─LIST_NODES─▶ newest run's source ids ─MONITOR─▶ logger
  *   logger ─MONITOR_EVENTS─▶ live listener ─▶ PlotData (while not paused by the caller's choice)
- *   loadHistory(from, to) ─HISTORY─▶ events in time order ─▶ PlotData
+ *   loadHistory(from, to) ─HISTORY─▶ HistoryColumns (times, numbers) in time order ─▶ PlotData
  * </pre>
  */
 public final class LoggerConnection implements AutoCloseable {
@@ -122,8 +123,8 @@ public final class LoggerConnection implements AutoCloseable {
 
     /** Every value of the sources with {@code from <= time <= to} (µs), in time order, into {@code into}. */
     public int loadHistory(int[] sourceIds, long from, long to, PlotData into) throws IOException {
-        List<NetworkEvent> events = client.history(sourceIds, from, to);
-        events.forEach(into::accept);
+        HistoryColumns events = client.historyColumns(sourceIds, from, to); // numbers without an object each
+        into.accept(events);
         return events.size();
     }
 

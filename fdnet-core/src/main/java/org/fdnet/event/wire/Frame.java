@@ -79,6 +79,26 @@ public final class Frame {
         return s;
     }
 
+    /** Steps over a string, checking its length exactly as {@link #getString()} does. */
+    public void skipString() throws ProtocolException {
+        int n = getInt();
+        if (n < 0 || n > payload.remaining()) {
+            throw new ProtocolException("malformed " + type + " frame: string of " + n
+                    + " bytes with " + payload.remaining() + " bytes left");
+        }
+        payload.position(payload.position() + n);
+    }
+
+    /** Where the cursor is in the payload: with {@link #rewind(int)}, a frame can be checked, then read. */
+    public int position() {
+        return payload.position();
+    }
+
+    /** Puts the cursor back to a {@link #position()} taken earlier. */
+    public void rewind(int position) {
+        payload.position(position);
+    }
+
     /** Fails if bytes are left over: a frame must be exactly as long as its content. */
     public void expectEnd() throws ProtocolException {
         if (payload.hasRemaining()) {

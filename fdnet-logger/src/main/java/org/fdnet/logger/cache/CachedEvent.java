@@ -15,6 +15,7 @@ public final class CachedEvent {
     private final int bytes;
     private final long arrivalNanos;
     private boolean committed;
+    private boolean left;
     int pendingMonitors;
 
     public CachedEvent(NetworkEvent event, RunProgress run, long seq, int bytes, long arrivalNanos) {
@@ -59,6 +60,15 @@ public final class CachedEvent {
 
     void markCommitted() {
         committed = true;
+    }
+
+    /** Evicted from its node's timeline (guarded by the cache's lock, like {@link #committed()}). */
+    boolean left() {
+        return left;
+    }
+
+    void markLeft() {
+        left = true;
     }
 
     boolean evictable() {

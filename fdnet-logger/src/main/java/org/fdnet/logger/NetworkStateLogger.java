@@ -136,11 +136,12 @@ public final class NetworkStateLogger implements AutoCloseable {
 
     public LoggerStatus status() {
         if (!running) {
-            return new LoggerStatus(false, null, 0, 0, "-", List.of(), List.of(), 0, 0);
+            return new LoggerStatus(false, null, 0, 0, "-", List.of(), List.of(), 0, 0, 0);
         }
         CacheStatus c = cache.status();
         return new LoggerStatus(true, c, in.rate(c.received()), out.rate(c.committed()), writer.databaseState(),
-                receiver.factory().clients(), sender.factory().clients(), writer.lastBatchRows(), writer.maxBatchRows());
+                receiver.factory().clients(), sender.factory().clients(), writer.lastBatchRows(), writer.maxBatchRows(),
+                writer.connections());
     }
 
     /** Stops the receivers, lets the writer drain (bounded), then stops the rest. */

@@ -20,8 +20,9 @@ import org.postgresql.copy.CopyIn;
 /**
  * The logger's baseline: raw COPY of rows like the benchmark's (same nodes, same kind of values) into a fresh
  * table defined as {@code datavalue_log} ({@code LIKE ... INCLUDING ALL}: same primary key), batch after
- * batch of the given sizes, each batch sorted by (sourceid, time) and committed on its own, from one thread.
- * No cache, no network, no watermark: what PostgreSQL alone takes.
+ * batch of the given sizes, each batch sorted by (sourceid, time) and committed on its own, from one thread —
+ * or, like the writer with several connections, pipelined over several connections with the commits in batch
+ * order ({@link #runPipelined}). No cache, no network, no watermark: what PostgreSQL alone takes.
  */
 final class RawCopyBaseline {
     /** How the rows are sent: PostgreSQL's text or binary COPY format. */
@@ -48,6 +49,108 @@ final class RawCopyBaseline {
             double rate = rows / ((System.nanoTime() - t0) / 1e9);
             s.execute("DROP TABLE bench_baseline");
             return rate;
+        }
+    }
+
+    /**
+     * Rows per second for the same rows and batches as {@link #run} (text format), sent the way the writer
+     * sends them with {@code connections} connections: batch i on connection i mod {@code connections}, each
+     * COPYed as soon as its connection is free, committed only after batch i - 1 committed. The like-for-like
+     * baseline of a writer with that many connections.
+     */
+    double runPipelined(long rows, int[] sizes, int connections) throws SQLException, InterruptedException {
+        List<long[]> plan = new ArrayList<>(); // {first row, rows} of each batch
+        for (long done = 0; done < rows; ) {
+            int n = (int) Math.min(sizes[Math.min(plan.size(), sizes.length - 1)], rows - done);
+            plan.add(new long[] {done, n});
+            done += n;
+        }
+        try (Connection c = target.open(); Statement s = c.createStatement()) {
+            s.execute("DROP TABLE IF EXISTS bench_baseline");
+            s.execute("CREATE TABLE bench_baseline (LIKE datavalue_log INCLUDING ALL)");
+            List<Connection> open = new ArrayList<>();
+            try {
+                for (int i = 0; i < connections; i++) {
+                    Connection o = target.open();
+                    o.setAutoCommit(false);
+                    open.add(o);
+                }
+                CommitTurn turn = new CommitTurn();
+                AtomicReference<Exception> failure = new AtomicReference<>();
+                List<Thread> threads = new ArrayList<>();
+                long time = System.currentTimeMillis() * 1000;
+                long t0 = System.nanoTime();
+                for (int i = 0; i < connections; i++) {
+                    Connection mine = open.get(i);
+                    int first = i;
+                    Thread t = new Thread(() -> {
+                        try {
+                            long[] keys = new long[Arrays.stream(sizes).max().orElse(1)];
+                            for (int b = first; b < plan.size(); b += connections) {
+                                long done = plan.get(b)[0];
+                                int n = (int) plan.get(b)[1];
+                                for (int k = 0; k < n; k++) {
+                                    keys[k] = ((done + k) % nodes) << 40 | k;
+                                }
+                                Arrays.sort(keys, 0, n);
+                                byte[] bytes = text(keys, n, done, time);
+                                CopyIn in = mine.unwrap(PGConnection.class).getCopyAPI()
+                                        .copyIn("COPY bench_baseline (sourceid, time, value, typevalue) FROM STDIN");
+                                in.writeToCopy(bytes, 0, bytes.length);
+                                in.endCopy();
+                                turn.await(b);
+                                mine.commit();
+                                turn.committed(b);
+                            }
+                        } catch (SQLException | InterruptedException e) {
+                            failure.compareAndSet(null, e);
+                            turn.fail();
+                        }
+                    }, "bench-pipelined-copy-" + i);
+                    threads.add(t);
+                    t.start();
+                }
+                for (Thread t : threads) {
+                    t.join();
+                }
+                double rate = rows / ((System.nanoTime() - t0) / 1e9);
+                if (failure.get() instanceof SQLException e) {
+                    throw e;
+                } else if (failure.get() != null) {
+                    throw new SQLException("pipelined COPY interrupted", failure.get());
+                }
+                s.execute("DROP TABLE bench_baseline");
+                return rate;
+            } finally {
+                for (Connection o : open) {
+                    o.close();
+                }
+            }
+        }
+    }
+
+    /** Whose COMMIT is next: batch i commits after batch i - 1 (or gives up when another thread failed). */
+    private static final class CommitTurn {
+        private int next;
+        private boolean failed;
+
+        synchronized void await(int batch) throws InterruptedException, SQLException {
+            while (next != batch && !failed) {
+                wait();
+            }
+            if (failed) {
+                throw new SQLException("another connection of the pipelined baseline failed");
+            }
+        }
+
+        synchronized void committed(int batch) {
+            next = batch + 1;
+            notifyAll();
+        }
+
+        synchronized void fail() {
+            failed = true;
+            notifyAll();
         }
     }
 

@@ -83,6 +83,7 @@ public final class LoggerConfig {
             case WRITER_BATCH_TIMEOUT -> range(s, v, 1, 3_600_000);
             case WRITER_MAX_BATCH_ROWS -> range(s, v, 1, 10_000_000);
             case WRITER_MAX_BATCH_BYTES -> range(s, v, 1, 4096);
+            case WRITER_CONNECTIONS -> range(s, v, 1, 8);
             case WRITER_RECONNECT_ATTEMPTS -> range(s, v, 1, 1_000_000);
             case WRITER_RECONNECT_DELAY -> range(s, v, 0, 3_600_000);
             case RECEIVER_MAX_CLIENTS, SENDER_MAX_CLIENTS -> range(s, v, 1, 10_000);
@@ -166,6 +167,11 @@ public final class LoggerConfig {
 
     public int maxBatchRows() {
         return (int) number(LoggerSetting.WRITER_MAX_BATCH_ROWS);
+    }
+
+    /** Writer connections with a batch in flight at once (commits stay in order). */
+    public int writerConnections() {
+        return (int) number(LoggerSetting.WRITER_CONNECTIONS);
     }
 
     public long maxBatchBytes() {

@@ -21,6 +21,8 @@ public enum LoggerSetting {
     WRITER_BATCH_TIMEOUT("writer.batchTimeoutMillis", Panel.WRITER, "2000", "write a partial batch after this long"),
     WRITER_MAX_BATCH_ROWS("writer.maxBatchRows", Panel.WRITER, "200000", "under backlog, batches grow up to this many events"),
     WRITER_MAX_BATCH_BYTES("writer.maxBatchMegabytes", Panel.WRITER, "64", "... and up to this many cached MB"),
+    WRITER_CONNECTIONS("writer.connections", Panel.WRITER, "2",
+            "under backlog, COPY the next batch on another connection while one commits (1: one batch at a time)"),
     WRITER_RECONNECT("writer.reconnect", Panel.WRITER, "true", "reconnect to a lost database"),
     WRITER_RECONNECT_ATTEMPTS("writer.reconnectAttempts", Panel.WRITER, "5", "attempts before reporting the database down"),
     WRITER_RECONNECT_DELAY("writer.reconnectDelayMillis", Panel.WRITER, "5000", "delay between attempts"),

@@ -41,7 +41,10 @@ public final class EventStore implements AutoCloseable {
 
     private final DatabaseTarget target;
     private final ConnectionPool pool;
-    private final CopyRows rows = new CopyRows();
+    /** How long a writer's statement waits for a lock before it fails (then its batch is rolled back and retried in order). */
+    public static final int WRITER_LOCK_TIMEOUT_MILLIS = 5000;
+    /** One COPY buffer per writer thread: with several writer connections, batches are encoded at once. */
+    private final ThreadLocal<CopyRows> copyRows = ThreadLocal.withInitial(CopyRows::new);
 
     public EventStore(DatabaseTarget target) {
         this.target = target;
@@ -59,11 +62,33 @@ public final class EventStore implements AutoCloseable {
         }
     }
 
-    /** A connection for the writer (auto-commit off). */
+    /**
+     * A connection for the writer (auto-commit off), with a lock timeout: two writer transactions in flight
+     * could otherwise wait for each other where PostgreSQL cannot see it (the later one waits for the earlier
+     * one's commit in the client); a lock wait beyond {@link #WRITER_LOCK_TIMEOUT_MILLIS} fails the statement.
+     */
     public Connection openWriterConnection() throws SQLException {
         Connection c = target.open();
+        try (Statement st = c.createStatement()) {
+            st.execute("SET lock_timeout = " + WRITER_LOCK_TIMEOUT_MILLIS);
+        } catch (SQLException e) {
+            c.close();
+            throw e;
+        }
         c.setAutoCommit(false);
         return c;
+    }
+
+    /**
+     * A batch COPYed in a transaction still open on its connection: what {@link #commitBatch} needs to write
+     * the runs' watermarks and commit. The highest sequence number of each run in the batch.
+     */
+    public static final class OpenBatch {
+        private final Map<RunProgress, Long> lastSeq;
+
+        private OpenBatch(Map<RunProgress, Long> lastSeq) {
+            this.lastSeq = lastSeq;
+        }
     }
 
     /**
@@ -71,6 +96,15 @@ public final class EventStore implements AutoCloseable {
      * back (if the connection still answers) and the exception is rethrown: nothing of the batch is stored.
      */
     public void writeBatch(Connection c, List<CachedEvent> batch, List<NodeMapping> mappings) throws SQLException {
+        commitBatch(c, copyBatch(c, batch, mappings));
+    }
+
+    /**
+     * The first part of {@link #writeBatch}: in a new transaction, the mappings, the names, then COPY of the
+     * values sorted by key; the transaction stays open for {@link #commitBatch} or {@link #rollback}. On
+     * failure it is rolled back and the exception rethrown.
+     */
+    public OpenBatch copyBatch(Connection c, List<CachedEvent> batch, List<NodeMapping> mappings) throws SQLException {
         List<CachedEvent> data = new ArrayList<>();
         List<CachedEvent> relations = new ArrayList<>();
         List<CachedEvent> commands = new ArrayList<>();
@@ -89,6 +123,7 @@ public final class EventStore implements AutoCloseable {
             }
             lastSeq.merge(e.run(), e.seq(), Math::max);
         }
+        CopyRows rows = copyRows.get();
         try {
             saveMappings(c, mappings);
             saveNames(c, names);
@@ -99,24 +134,39 @@ public final class EventStore implements AutoCloseable {
                 DataValueEvent d = (DataValueEvent) e.event();
                 rows.number(d.sourceId()).number(d.time()).text(d.value()).number(d.type().code()).endRow();
             }
-            copy(copy, "COPY datavalue_log (sourceid, time, value, typevalue) FROM STDIN");
+            copy(copy, rows, "COPY datavalue_log (sourceid, time, value, typevalue) FROM STDIN");
             sortByKey(relations);
             rows.clear();
             for (CachedEvent e : relations) {
                 RelationValueEvent r = (RelationValueEvent) e.event();
                 rows.number(r.sourceId()).number(r.time()).text(r.value()).endRow();
             }
-            copy(copy, "COPY procvalue_log (sourceid, time, value) FROM STDIN");
+            copy(copy, rows, "COPY procvalue_log (sourceid, time, value) FROM STDIN");
             rows.clear();
             for (CachedEvent e : commands) {
                 NetworkCommandEvent n = (NetworkCommandEvent) e.event();
                 rows.number(n.sourceId()).text(n.sourceType()).text(n.command().text()).text(n.paramsId())
                         .text(n.paramsType()).number(n.time()).endRow();
             }
-            copy(copy, "COPY netcommand_log (sourceid, sourcetype, command, params_id, params_type, time) FROM STDIN");
+            copy(copy, rows, "COPY netcommand_log (sourceid, sourcetype, command, params_id, params_type, time) FROM STDIN");
+        } catch (SQLException | RuntimeException e) {
+            rollbackQuietly(c, e);
+            throw e;
+        }
+        return new OpenBatch(lastSeq);
+    }
+
+    /**
+     * The second part of {@link #writeBatch}: each run's committed sequence number and the COMMIT, in one
+     * round trip; then the runs' cores are told (ACK). On failure the transaction is rolled back (if the
+     * connection still answers) and the exception rethrown — when the COMMIT itself was lost on the way, the
+     * outcome is unknown: ask {@link #wasCommitted}.
+     */
+    public void commitBatch(Connection c, OpenBatch open) throws SQLException {
+        try {
             // The watermarks and the COMMIT go in one round trip: the statements are integers only.
             StringBuilder sql = new StringBuilder();
-            for (Map.Entry<RunProgress, Long> r : lastSeq.entrySet()) {
+            for (Map.Entry<RunProgress, Long> r : open.lastSeq.entrySet()) {
                 sql.append("UPDATE fdnet_run SET committed_seq = ").append(r.getValue()).append(" WHERE run_id = ")
                         .append(r.getKey().runId()).append(" AND committed_seq < ").append(r.getValue()).append("; ");
             }
@@ -129,9 +179,14 @@ public final class EventStore implements AutoCloseable {
             rollbackQuietly(c, e);
             throw e;
         }
-        for (Map.Entry<RunProgress, Long> r : lastSeq.entrySet()) {
+        for (Map.Entry<RunProgress, Long> r : open.lastSeq.entrySet()) {
             r.getKey().committed(r.getValue());
         }
+    }
+
+    /** Abandons a batch COPYed by {@link #copyBatch} (the batch before it failed): nothing of it is stored. */
+    public void rollback(Connection c) throws SQLException {
+        c.rollback();
     }
 
     /**
@@ -181,7 +236,7 @@ public final class EventStore implements AutoCloseable {
         return true;
     }
 
-    private void copy(CopyManager copy, String sql) throws SQLException {
+    private static void copy(CopyManager copy, CopyRows rows, String sql) throws SQLException {
         if (rows.isEmpty()) {
             return;
         }

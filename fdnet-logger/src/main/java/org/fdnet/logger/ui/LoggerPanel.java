@@ -197,8 +197,9 @@ public final class LoggerPanel extends JPanel {
                 s.cache().monitored()));
         rateLabel.setText(String.format("events/s: in %,.0f, out %,.0f (received %,d, committed %,d)",
                 s.eventsInPerSecond(), s.eventsOutPerSecond(), s.cache().received(), s.cache().committed()));
-        databaseLabel.setText(String.format("database: %s, lag %d ms (%,d unwritten), batch %,d (max %,d)", s.database(),
-                s.cache().lagMillis(), s.cache().unwritten(), s.batchRows(), s.maxBatchRows()));
+        databaseLabel.setText(String.format("database: %s, lag %d ms (%,d unwritten), batch %,d (max %,d), %d writer connection%s",
+                s.database(), s.cache().lagMillis(), s.cache().unwritten(), s.batchRows(), s.maxBatchRows(),
+                s.writerConnections(), s.writerConnections() == 1 ? "" : "s"));
         cores.update(s.cores());
         viewers.update(s.viewers());
     }

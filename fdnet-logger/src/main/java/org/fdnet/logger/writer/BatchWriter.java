@@ -1,11 +1,16 @@
 package org.fdnet.logger.writer;
 
-import java.sql.Connection;
 import java.sql.SQLException;
 import java.time.Instant;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.logger.cache.CachedEvent;
 import org.fdnet.logger.cache.EventCache;
 import org.fdnet.logger.store.EventStore;
@@ -21,6 +26,16 @@ import org.slf4j.LoggerFactory;
  * backlog up to {@code writer.maxBatchRows} / {@code writer.maxBatchMegabytes}, see {@link BatchSizer}); events leave the cache only after the commit. At the cache's critical
  * level, or when a viewer asks for a flush, it writes back to back (and, if enabled, at maximum thread
  * priority) until the normal level.
+ *
+ * <p>Several connections ({@code writer.connections}): under backlog, while batch N is COPYed or committed on
+ * one connection, batch N+1 is COPYed on another (a second backend, a second core); N+1's watermark and COMMIT
+ * are sent only once N's COMMIT returned ({@link WriterLane}), so each run's committed events stay a prefix
+ * of its sequence numbers, and events leave the cache and are acknowledged batch after batch, in order. If N
+ * fails, N+1 is rolled back and both are written again in order, one at a time. A batch carrying new node
+ * mappings or names is written only when nothing else is in flight (the one way two open transactions could
+ * lock each other's rows); the connections' lock timeout turns any other such wait into a failure and retry.
+ * At low load (the next batch not ready when one is in flight) the in-flight batch is finished first, so the
+ * thesis's batch size and timer keep their meaning.
  *
  * <p>Database lost: the same batch is retried every {@code reconnectDelayMillis}; after
  * {@code reconnectAttempts} failed attempts (the thesis panel's "number of attempts") it reports the database
@@ -42,12 +57,20 @@ public final class BatchWriter implements Runnable {
     private volatile boolean drainOnStop = true;
     private volatile String databaseState = "connecting";
     private volatile long batches;
+    private volatile long overlappedBatches;
+    private volatile long rolledBackBehind;
     private volatile int lastBatchRows;
     private volatile BatchObserver observer;
     private final BatchSizer sizer;
     private final Object retrySignal = new Object();
     private boolean retryRequested; // guarded by retrySignal
-    private Connection connection;
+    private final WriterLane[] lanes;
+    private final Deque<InFlight> inFlight = new ArrayDeque<>();
+    private int nextLane;
+
+    /** A batch handed to a lane, not yet known committed. */
+    private record InFlight(List<CachedEvent> batch, CompletableFuture<Void> done) {
+    }
 
     public BatchWriter(WriterSettings settings, EventCache cache, EventStore store, SourceDirectory directory,
                        Runnable onGiveUp) {
@@ -57,6 +80,15 @@ public final class BatchWriter implements Runnable {
         this.directory = directory;
         this.onGiveUp = onGiveUp;
         this.sizer = new BatchSizer(settings.batchSize(), settings.maxBatchRows());
+        this.lanes = new WriterLane[Math.max(1, settings.connections())];
+        for (int i = 0; i < lanes.length; i++) {
+            lanes[i] = new WriterLane(store, "fdnet-writer-connection-" + (i + 1));
+        }
+    }
+
+    /** The writer's connections to the database ({@code writer.connections}). */
+    public int connections() {
+        return lanes.length;
     }
 
     /** Events in the last batch taken (it grows with the backlog, see {@link BatchSizer}). */
@@ -81,6 +113,16 @@ public final class BatchWriter implements Runnable {
 
     public long batches() {
         return batches;
+    }
+
+    /** Batches handed to a connection while the one before was still in flight (the pipeline at work). */
+    public long overlappedBatches() {
+        return overlappedBatches;
+    }
+
+    /** Batches rolled back because the batch before them failed (each then written again, in order). */
+    public long rolledBackBehind() {
+        return rolledBackBehind;
     }
 
     /**
@@ -140,21 +182,44 @@ public final class BatchWriter implements Runnable {
     public void run() {
         long timerStart = System.nanoTime();
         try {
-            connection = store.openWriterConnection();
+            for (WriterLane lane : lanes) {
+                lane.connect().get();
+            }
             databaseState = "connected";
-        } catch (SQLException e) {
-            databaseState = "unreachable: " + e.getMessage();
-            LOG.warn("writer cannot reach the database yet ({}); it will retry with the first batch", e.getMessage());
+        } catch (ExecutionException e) {
+            databaseState = "unreachable: " + e.getCause().getMessage();
+            LOG.warn("writer cannot reach the database yet ({}); it will retry with the first batch",
+                    e.getCause().getMessage());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            closeLanes();
+            return;
         }
         try {
             while (true) {
+                if (!reapCommitted()) {
+                    break;
+                }
+                if (inFlight.size() == lanes.length) {
+                    if (!finishOldest()) {
+                        break;
+                    }
+                    continue;
+                }
                 boolean urgent = cache.pressured() || flushTarget.get() > cache.committedCount() || stopping;
                 if (stopping && (!drainOnStop || cache.unwrittenCount() == 0)) {
                     break;
                 }
                 priority(cache.pressured());
-                long timerLeft = TimeUnit.MILLISECONDS.toNanos(settings.batchTimeoutMillis()) - (System.nanoTime() - timerStart);
                 long delay = urgent ? 0 : TimeUnit.MILLISECONDS.toNanos(settings.writingDelayMillis());
+                if (!inFlight.isEmpty() && !batchReadyNow(urgent, delay)) {
+                    // Low load: no pipeline; finish what is in flight before waiting for the next batch.
+                    if (!finishAll()) {
+                        break;
+                    }
+                    continue;
+                }
+                long timerLeft = TimeUnit.MILLISECONDS.toNanos(settings.batchTimeoutMillis()) - (System.nanoTime() - timerStart);
                 int ready = cache.awaitUnwritten(settings.batchSize(), delay, urgent ? 0 : Math.max(0, timerLeft));
                 boolean timerExpired = System.nanoTime() - timerStart >= TimeUnit.MILLISECONDS.toNanos(settings.batchTimeoutMillis());
                 if (ready >= settings.batchSize() || (ready > 0 && (timerExpired || urgent))) {
@@ -162,24 +227,127 @@ public final class BatchWriter implements Runnable {
                     List<CachedEvent> batch = cache.takeBatch(Math.max(ready, Math.min(backlog, sizer.next(backlog))),
                             settings.maxBatchBytes());
                     lastBatchRows = batch.size();
-                    if (!write(batch)) {
-                        break;
-                    }
-                    BatchObserver o = observer;
-                    if (o != null) {
-                        o.committed(batch);
+                    List<NodeMapping> mappings = directory.unsavedMappings();
+                    if (lanes.length == 1 || !mappings.isEmpty() || carriesNames(batch)) {
+                        if (!finishAll() || !write(batch, mappings, null)) {
+                            break;
+                        }
+                    } else {
+                        dispatch(batch);
                     }
                     timerStart = System.nanoTime();
                 } else if (timerExpired) {
                     timerStart = System.nanoTime();
                 }
             }
+            finishAll();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } finally {
-            closeConnection();
+            closeLanes();
             LOG.info("writer stopped: {} batches, {} events committed, {} unwritten", batches, cache.committedCount(),
                     cache.unwrittenCount());
+        }
+    }
+
+    private boolean batchReadyNow(boolean urgent, long delay) {
+        int ready = cache.readyUnwritten(settings.batchSize(), delay);
+        return ready >= settings.batchSize() || (urgent && ready > 0);
+    }
+
+    private static boolean carriesNames(List<CachedEvent> batch) {
+        for (CachedEvent e : batch) {
+            if (e.event() instanceof NodeNamedEvent) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Hands a batch to the next lane: its COPY starts now, its COMMIT waits for the batch before it. */
+    private void dispatch(List<CachedEvent> batch) {
+        CompletableFuture<Void> before = inFlight.isEmpty() ? CompletableFuture.completedFuture(null)
+                : inFlight.peekLast().done();
+        if (!inFlight.isEmpty()) {
+            overlappedBatches++;
+        }
+        WriterLane lane = lanes[nextLane];
+        nextLane = (nextLane + 1) % lanes.length;
+        inFlight.addLast(new InFlight(batch, lane.write(batch, List.of(), before)));
+    }
+
+    /** Finishes the in-flight batches already done (commits seen promptly: ACKs and eviction not delayed). */
+    private boolean reapCommitted() throws InterruptedException {
+        while (!inFlight.isEmpty() && inFlight.peekFirst().done().isDone()) {
+            if (!finishOldest()) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private boolean finishAll() throws InterruptedException {
+        while (!inFlight.isEmpty()) {
+            if (!finishOldest()) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Waits for the oldest batch in flight. Committed: it leaves the cache. Failed: every batch behind it is
+     * rolled back by its lane (its COMMIT waited for this one), then all of them are written again, in order,
+     * one at a time (with the outage rules of {@link #write}); false only when giving up.
+     */
+    private boolean finishOldest() throws InterruptedException {
+        InFlight oldest = inFlight.pollFirst();
+        Throwable failure = outcome(oldest.done());
+        if (failure == null) {
+            committed(oldest.batch(), List.of());
+            return true;
+        }
+        List<InFlight> behind = new ArrayList<>(inFlight);
+        inFlight.clear();
+        rolledBackBehind += behind.size();
+        for (InFlight b : behind) {
+            if (outcome(b.done()) == null) {
+                throw new IllegalStateException("a batch committed after the batch before it failed");
+            }
+        }
+        LOG.warn("a batch of {} events failed ({}); {} batch(es) behind it rolled back; writing them again in order",
+                oldest.batch().size(), failure.getMessage(), behind.size());
+        SQLException cause = failure instanceof SQLException sql ? sql : new SQLException(failure.getMessage(), failure);
+        if (!write(oldest.batch(), List.of(), cause)) {
+            return false;
+        }
+        for (InFlight b : behind) {
+            if (!write(b.batch(), List.of(), null)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Null when the batch committed, else why not. */
+    private static Throwable outcome(CompletableFuture<Void> done) throws InterruptedException {
+        try {
+            done.get();
+            return null;
+        } catch (ExecutionException e) {
+            return e.getCause();
+        }
+    }
+
+    /** The batch is in the database: mappings saved, events out of the cache (cores acknowledged), observer told. */
+    private void committed(List<CachedEvent> batch, List<NodeMapping> mappings) {
+        directory.saved(mappings);
+        cache.committed(batch);
+        batches++;
+        databaseState = "connected";
+        BatchObserver o = observer;
+        if (o != null) {
+            o.committed(batch);
         }
     }
 
@@ -190,78 +358,86 @@ public final class BatchWriter implements Runnable {
         }
     }
 
-    /** Writes one batch, retrying until it is committed; false only when giving up (reconnect=false). */
-    private boolean write(List<CachedEvent> batch) throws InterruptedException {
-        List<NodeMapping> mappings = directory.unsavedMappings();
+    /**
+     * Writes one batch alone (nothing else in flight), retrying until it is committed; false only when giving
+     * up (reconnect=false, or a stop without drain). {@code alreadyFailed}: its first attempt failed in the
+     * pipeline (the COMMIT's outcome may be unknown: the next attempt asks the database first).
+     */
+    private boolean write(List<CachedEvent> batch, List<NodeMapping> mappings, SQLException alreadyFailed)
+            throws InterruptedException {
         int failures = 0;
         long downSince = 0;
+        SQLException failure = alreadyFailed;
         while (true) {
-            try {
-                if (connection == null) {
-                    connection = store.openWriterConnection();
-                }
-                if (failures > 0 && store.wasCommitted(batch)) {
-                    LOG.info("the batch whose commit failed was committed after all; not writing it again");
-                } else {
-                    store.writeBatch(connection, batch, mappings);
-                }
-                directory.saved(mappings);
-                cache.committed(batch);
-                batches++;
-                if (failures > 0) {
-                    LOG.warn("database back after {} failed attempts ({} s); writing resumes",
-                            failures, (System.currentTimeMillis() - downSince) / 1000);
-                }
-                databaseState = "connected";
-                return true;
-            } catch (SQLException e) {
-                closeConnection();
-                failures++;
-                if (failures == 1) {
-                    downSince = System.currentTimeMillis();
-                }
-                databaseState = "lost since " + Instant.ofEpochMilli(downSince) + ", " + failures + " attempts";
-                if (!settings.reconnect()) {
-                    LOG.error("database {} lost ({}); writer.reconnect=false: stopping the logger. The cores keep their"
-                            + " {} unacknowledged events and send them to the next logger.", store.target(), e.getMessage(),
-                            cache.unwrittenCount() + batch.size());
-                    onGiveUp.run();
-                    return false;
-                }
-                if (failures == 1) {
-                    LOG.warn("database write failed ({}); holding {} events, retrying every {} ms", e.getMessage(),
-                            cache.unwrittenCount() + batch.size(), settings.reconnectDelayMillis());
-                }
-                if (failures % settings.reconnectAttempts() == 0) {
-                    databaseState = "DOWN since " + Instant.ofEpochMilli(downSince) + ", " + failures
-                            + " attempts; not retrying until told to";
-                    LOG.error("DATABASE DOWN: {} failed attempts since {}; holding {} events in the cache ({}); not"
-                                    + " retrying until told to; receivers pause at the critical level and the cores"
-                                    + " keep the rest — nothing is dropped", failures, Instant.ofEpochMilli(downSince),
-                            cache.unwrittenCount() + batch.size(), e.getMessage());
-                    if (!awaitRetryRequest()) {
-                        return false;
+            if (failure == null) {
+                try {
+                    if (failures > 0 && store.wasCommitted(batch)) {
+                        LOG.info("the batch whose commit failed was committed after all; not writing it again");
+                    } else {
+                        awaitCommit(lanes[0].write(batch, mappings, CompletableFuture.completedFuture(null)));
                     }
-                    LOG.warn("told to retry the database {}: {} more attempts", store.target(),
-                            settings.reconnectAttempts());
-                    continue;
+                    committed(batch, mappings);
+                    if (failures > 0) {
+                        LOG.warn("database back after {} failed attempts ({} s); writing resumes",
+                                failures, (System.currentTimeMillis() - downSince) / 1000);
+                    }
+                    return true;
+                } catch (SQLException e) {
+                    failure = e;
                 }
-                if (stopping && !drainOnStop) {
+            }
+            SQLException e = failure;
+            failure = null;
+            failures++;
+            if (failures == 1) {
+                downSince = System.currentTimeMillis();
+            }
+            databaseState = "lost since " + Instant.ofEpochMilli(downSince) + ", " + failures + " attempts";
+            if (!settings.reconnect()) {
+                LOG.error("database {} lost ({}); writer.reconnect=false: stopping the logger. The cores keep their"
+                        + " {} unacknowledged events and send them to the next logger.", store.target(), e.getMessage(),
+                        cache.unwrittenCount() + batch.size());
+                onGiveUp.run();
+                return false;
+            }
+            if (failures == 1) {
+                LOG.warn("database write failed ({}); holding {} events, retrying every {} ms", e.getMessage(),
+                        cache.unwrittenCount() + batch.size(), settings.reconnectDelayMillis());
+            }
+            if (failures % settings.reconnectAttempts() == 0) {
+                databaseState = "DOWN since " + Instant.ofEpochMilli(downSince) + ", " + failures
+                        + " attempts; not retrying until told to";
+                LOG.error("DATABASE DOWN: {} failed attempts since {}; holding {} events in the cache ({}); not"
+                                + " retrying until told to; receivers pause at the critical level and the cores"
+                                + " keep the rest — nothing is dropped", failures, Instant.ofEpochMilli(downSince),
+                        cache.unwrittenCount() + batch.size(), e.getMessage());
+                if (!awaitRetryRequest()) {
                     return false;
                 }
-                Thread.sleep(settings.reconnectDelayMillis());
+                LOG.warn("told to retry the database {}: {} more attempts", store.target(),
+                        settings.reconnectAttempts());
+                continue;
             }
+            if (stopping && !drainOnStop) {
+                return false;
+            }
+            Thread.sleep(settings.reconnectDelayMillis());
         }
     }
 
-    private void closeConnection() {
-        if (connection != null) {
-            try {
-                connection.close();
-            } catch (SQLException e) {
-                LOG.debug("closing the writer's connection: {}", e.getMessage());
-            }
-            connection = null;
+    /** Waits for a lane's batch; its failure as an SQLException (a runtime failure wrapped). */
+    private static void awaitCommit(CompletableFuture<Void> done) throws SQLException, InterruptedException {
+        Throwable failure = outcome(done);
+        if (failure instanceof SQLException e) {
+            throw e;
+        } else if (failure != null) {
+            throw new SQLException(failure.getMessage(), failure);
+        }
+    }
+
+    private void closeLanes() {
+        for (WriterLane lane : lanes) {
+            lane.close();
         }
     }
 }

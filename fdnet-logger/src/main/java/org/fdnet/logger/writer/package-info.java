@@ -3,10 +3,14 @@
  *
  * <pre>
  *   EventCache.awaitUnwritten(batchSize | timer) ─takeBatch(BatchSizer: grows with the backlog, ≤ max rows/bytes)
- *        │                                                  ─▶ BatchWriter ─EventStore.writeBatch (COPY, commit)─▶ DB
- *        │                                                        │ then BatchObserver (benchmarks)
- *        ▲                                                        │ on success: cache.committed(batch) → evict, ACK cores
- *        └── pressured / flush(): no timer, back to back ◀────────┘ on failure: same batch again after a delay, forever
+ *        │                                                  ─▶ BatchWriter ─▶ WriterLane 1..writer.connections
+ *        │                                                        │            (EventStore.copyBatch, then
+ *        │                                                        │             commitBatch once the batch
+ *        │                                                        │             before committed) ─▶ DB
+ *        ▲                                                        │ oldest first: BatchObserver (benchmarks),
+ *        │                                                        │ cache.committed(batch) → evict, ACK cores
+ *        └── pressured / flush(): no timer, back to back ◀────────┘ on failure: it and the batches behind it
+ *                                                                   (rolled back) again, in order, one at a time
  * </pre>
  */
 package org.fdnet.logger.writer;

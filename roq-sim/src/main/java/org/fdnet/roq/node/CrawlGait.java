@@ -23,6 +23,11 @@ import org.fdnet.runtime.Value;
  * most {@code tries} times (default 3); the last foothold is stepped on whatever the verdict, and reported. If the
  * verdict disappears (Probing unloaded), it steps on without probing.
  *
+ * <p>{@code swing} (default 0.14) is the part of the cycle each leg is in the air, so each foot is down 1 − swing of
+ * it (the duty factor, 0.86 by default); {@code shift} (default 0.08) is the part of each quarter before its leg
+ * lifts. swing + shift ≤ 0.25 keeps one leg in the air at a time; 0.25 and 0 give the fastest crawl, duty factor
+ * 3/4, with a leg in the air all the time.
+ *
  * <p>{@code stance} (m, default the standing pose's 0.43): how far each foot stands from the body's centre line.
  * The simulator sets RoQ down in its standing pose; each leg moves to the stance while it swings, so after the
  * first four steps the feet walk at the stance's width.
@@ -30,8 +35,10 @@ import org.fdnet.runtime.Value;
 public class CrawlGait extends Relation {
     /** hr, fr, hl, fl. */
     static final int[] ORDER = {3, 1, 2, 0};
-    private static final double SHIFT = 0.08;
-    private static final double SWING = 0.14;
+    /** The part of the cycle at the start of each quarter before its leg lifts (time for the body to shift). */
+    private double shift;
+    /** The part of the cycle each leg is in the air: the duty factor is 1 − swing. */
+    private double swing;
 
     private final double[] feet = new double[3 * LEGS];
     private final double[] home = new double[3 * LEGS];
@@ -70,6 +77,16 @@ public class CrawlGait extends Relation {
         }
         if (height < 0.15 || height > 0.4) {
             throw p.invalid("height", "must lie between 0.15 and 0.4 m, was " + height);
+        }
+        swing = p.doubleValue("swing", 0.14);
+        shift = p.doubleValue("shift", 0.08);
+        if (swing < 0.05 || swing > 0.25) {
+            throw p.invalid("swing", "must lie between 0.05 and 0.25 of the cycle (one leg in the air at a time), was "
+                    + swing);
+        }
+        if (shift < 0 || shift + swing > 0.25 + 1e-9) {
+            throw p.invalid("shift", "must lie between 0 and 0.25 - swing (" + (0.25 - swing) + ") of the cycle, was "
+                    + shift);
         }
         retreat = p.doubleValue("retreat", 0.08);
         tries = (int) p.longValue("tries", 3);
@@ -113,7 +130,7 @@ public class CrawlGait extends Relation {
         boolean inAir = false;
         for (int q = 0; q < 4; q++) {
             int leg = ORDER[q];
-            double u = phase - q * 0.25 - SHIFT;
+            double u = phase - q * 0.25 - shift;
             u -= Math.floor(u);
             double x;
             double lift = 0;
@@ -122,8 +139,8 @@ public class CrawlGait extends Relation {
                 x = stride / 2 - shorten[leg];
                 lift = clearance / 2;
                 inAir = true;
-            } else if (u < SWING) {
-                double s = u / SWING;
+            } else if (u < swing) {
+                double s = u / swing;
                 if (side[leg] != stance) {
                     double from = side[leg];
                     y = Math.signum(home[3 * leg + 1]) * (from + (stance - from) * s);
@@ -139,7 +156,7 @@ public class CrawlGait extends Relation {
                 }
                 inAir |= q == quarter;
             } else {
-                double s = (u - SWING) / (1 - SWING);
+                double s = (u - swing) / (1 - swing);
                 x = stride / 2 - shorten[leg] - stride * s;
             }
             feet[3 * leg] = home[3 * leg] + x;
@@ -157,7 +174,7 @@ public class CrawlGait extends Relation {
     /** With probing, a swing that reached its touchdown in this period stops there and a probe attempt starts. */
     private void stopAtTouchdown(double before, boolean probes) {
         int q = Math.min(3, (int) (before * 4));
-        double touchdown = q * 0.25 + SHIFT + SWING;
+        double touchdown = q * 0.25 + shift + swing;
         double travelled = phase - before + (phase < before ? 1 : 0);
         double toTouchdown = touchdown - before;
         if (toTouchdown <= 0 || toTouchdown > travelled) {

@@ -38,6 +38,17 @@ public final class EventCodec {
     public static final int MIN_EVENT_BYTES = 1 + 4 + 8 + 4;
 
     private static final NetworkCommand[] COMMANDS = NetworkCommand.values();
+    /** {@link ValueType} by code, looked up without {@code values()}'s copy per event (the intake's hot path). */
+    private static final ValueType[] VALUE_TYPES = valueTypesByCode();
+
+    /**
+     * How a reader turns the source id on the wire into the one it keeps: the logger maps a core's node ids to
+     * global ids while decoding, so each event is built once. May wait (a new block of ids from the database).
+     */
+    @FunctionalInterface
+    public interface SourceIdMap {
+        int map(int sourceIdOnWire) throws InterruptedException;
+    }
 
     private EventCodec() {
     }
@@ -143,6 +154,54 @@ public final class EventCodec {
         int kind = f.getByte();
         int source = f.getInt();
         long time = f.getLong();
+        return body(f, kind, source, time);
+    }
+
+    /**
+     * One event, built with {@code sources.map(id on the wire)} as its source id: what {@link #read(Frame)} then
+     * {@link #withSource} give, with one object instead of two. The frame should have passed {@link #skip} first
+     * when nothing may be mapped for a malformed frame.
+     */
+    public static NetworkEvent read(Frame f, SourceIdMap sources) throws ProtocolException, InterruptedException {
+        int kind = f.getByte();
+        int source = sources.map(f.getInt());
+        long time = f.getLong();
+        return body(f, kind, source, time);
+    }
+
+    /**
+     * Steps over one event, checking it exactly as {@link #read(Frame)} does (kind, value type, command, node
+     * kind, every length) without building it: a receiver checks a whole frame before it takes any event.
+     */
+    public static void skip(Frame f) throws ProtocolException {
+        int kind = f.getByte();
+        f.getInt();
+        f.getLong();
+        switch (kind) {
+            case DATA -> {
+                valueType(f.getByte());
+                f.skipString();
+            }
+            case RELATION -> f.skipString();
+            case COMMAND -> {
+                f.skipString();
+                command(f.getByte());
+                f.skipString();
+                f.skipString();
+            }
+            case NAMED -> {
+                int nodeKind = f.getByte();
+                if (nodeKind != 1 && nodeKind != 2) {
+                    throw new ProtocolException("malformed " + f.type() + " frame: unknown node kind " + nodeKind);
+                }
+                f.skipString();
+                f.skipString();
+            }
+            default -> throw new ProtocolException("malformed " + f.type() + " frame: unknown event kind " + kind);
+        }
+    }
+
+    private static NetworkEvent body(Frame f, int kind, int source, long time) throws ProtocolException {
         try {
             return switch (kind) {
                 case DATA -> new DataValueEvent(source, time, valueType(f.getByte()), f.getString());
@@ -168,11 +227,23 @@ public final class EventCodec {
     }
 
     private static ValueType valueType(int code) throws ProtocolException {
-        try {
-            return ValueType.fromCode(code);
-        } catch (IllegalArgumentException e) {
+        ValueType t = code < VALUE_TYPES.length ? VALUE_TYPES[code] : null;
+        if (t == null) {
             throw new ProtocolException("unknown value type code " + code);
         }
+        return t;
+    }
+
+    private static ValueType[] valueTypesByCode() {
+        int max = 0;
+        for (ValueType t : ValueType.values()) {
+            max = Math.max(max, t.code());
+        }
+        ValueType[] byCode = new ValueType[max + 1];
+        for (ValueType t : ValueType.values()) {
+            byCode[t.code()] = t;
+        }
+        return byCode;
     }
 
     private static NetworkCommand command(int ordinal) throws ProtocolException {

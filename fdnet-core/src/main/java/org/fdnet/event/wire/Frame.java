@@ -125,6 +125,16 @@ public final class Frame {
         return payload.array();
     }
 
+    /** Where the cursor is in the payload: with {@link #rewind(int)}, a frame can be checked, then read. */
+    public int position() {
+        return payload.position();
+    }
+
+    /** Puts the cursor back to a {@link #position()} taken earlier. */
+    public void rewind(int position) {
+        payload.position(position);
+    }
+
     /** Fails if bytes are left over: a frame must be exactly as long as its content. */
     public void expectEnd() throws ProtocolException {
         if (payload.hasRemaining()) {

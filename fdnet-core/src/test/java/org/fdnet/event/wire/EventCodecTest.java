@@ -100,4 +100,70 @@ class EventCodecTest {
         Hello h = Hello.read(new FrameReader(new ByteArrayInputStream(out.toByteArray()), 1 << 20).read());
         assertThat(h).isEqualTo(Hello.core(run, "robot-1"));
     }
+
+    private static Frame eventsOf(byte[] bytes) throws IOException {
+        Frame f = new FrameReader(new ByteArrayInputStream(bytes), Protocol.DEFAULT_MAX_FRAME_BYTES).read();
+        f.getLong();
+        return f;
+    }
+
+    @Test
+    void shouldBuildEachEventOnceWithItsMappedSourceAsReadThenWithSourceWould() throws Exception {
+        Frame f = eventsOf(frame(ALL));
+        int n = f.getCount(EventCodec.MIN_EVENT_BYTES);
+        NetworkEvent[] mapped = new NetworkEvent[n];
+        for (int i = 0; i < n; i++) {
+            mapped[i] = EventCodec.read(f, id -> 1000 + id);
+        }
+        f.expectEnd();
+        assertThat(Arrays.asList(mapped)).isEqualTo(ALL.stream().map(e -> EventCodec.withSource(e, 1000 + e.sourceId())).toList());
+    }
+
+    @Test
+    void shouldSkipExactlyTheBytesReadWouldRead() throws IOException {
+        Frame f = eventsOf(frame(ALL));
+        int n = f.getCount(EventCodec.MIN_EVENT_BYTES);
+        int start = f.position();
+        int[] afterRead = new int[n];
+        for (int i = 0; i < n; i++) {
+            EventCodec.read(f);
+            afterRead[i] = f.position();
+        }
+        f.rewind(start);
+        for (int i = 0; i < n; i++) {
+            EventCodec.skip(f);
+            assertThat(f.position()).isEqualTo(afterRead[i]);
+        }
+        f.expectEnd();
+    }
+
+    @Test
+    void shouldRejectInSkipEveryMalformedEventThatReadRejects() throws IOException {
+        // kind, value type, command, node kind and a string longer than the frame: skip must fail where read fails
+        List<byte[]> bad = List.of(
+                eventBytes(w -> w.putEventHead(9, 1, 2L).putString("x")),
+                eventBytes(w -> w.putEventHead(1, 1, 2L).putByte(77).putString("x")),
+                eventBytes(w -> w.putEventHead(3, 1, 2L).putString("t").putByte(200).putString("p").putString("q")),
+                eventBytes(w -> w.putEventHead(4, 1, 2L).putByte(3).putString("m").putString("n")),
+                eventBytes(w -> w.putEventHead(2, 1, 2L).putInt(5000)));
+        for (byte[] b : bad) {
+            Frame forRead = eventsOf(b);
+            forRead.getCount(EventCodec.MIN_EVENT_BYTES);
+            Frame forSkip = eventsOf(b);
+            forSkip.getCount(EventCodec.MIN_EVENT_BYTES);
+            Throwable byRead = org.assertj.core.api.Assertions.catchThrowable(() -> EventCodec.read(forRead));
+            assertThat(byRead).isInstanceOf(ProtocolException.class);
+            assertThatThrownBy(() -> EventCodec.skip(forSkip)).isInstanceOf(ProtocolException.class)
+                    .hasMessage(byRead.getMessage());
+        }
+    }
+
+    private static byte[] eventBytes(java.util.function.Consumer<FrameWriter> event) throws IOException {
+        FrameWriter w = new FrameWriter();
+        w.begin(MessageType.EVENTS).putLong(1).putInt(1);
+        event.accept(w);
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        w.writeTo(out);
+        return out.toByteArray();
+    }
 }

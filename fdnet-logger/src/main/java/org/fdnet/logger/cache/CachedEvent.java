@@ -15,6 +15,7 @@ public final class CachedEvent {
     private final int bytes;
     private final long arrivalNanos;
     private boolean committed;
+    private boolean left;
     int pendingMonitors;
     /** The event as a plotting viewer receives it, encoded the first time one asks (see {@link #wire()}). */
     private volatile byte[] wire;
@@ -75,6 +76,15 @@ public final class CachedEvent {
 
     void markCommitted() {
         committed = true;
+    }
+
+    /** Evicted from its node's timeline (guarded by the cache's lock, like {@link #committed()}). */
+    boolean left() {
+        return left;
+    }
+
+    void markLeft() {
+        left = true;
     }
 
     boolean evictable() {

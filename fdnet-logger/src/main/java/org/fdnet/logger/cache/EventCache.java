@@ -212,6 +212,9 @@ public final class EventCache {
             }
             long freed = 0;
             for (CachedEvent e : batch) {
+                if (e.left()) {
+                    continue; // already evicted with an earlier event of its node: one eviction pass per node
+                }
                 NetworkEvent ev = e.event();
                 if (ev instanceof NetworkCommandEvent) {
                     freed += commands.evict(e.sourceId());

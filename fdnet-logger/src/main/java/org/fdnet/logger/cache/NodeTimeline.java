@@ -69,6 +69,7 @@ final class NodeTimeline {
             CachedEvent e = items[head];
             evictedUpTo = Math.max(evictedUpTo, e.time());
             freed += e.bytes();
+            e.markLeft();
             items[head++] = null;
         }
         if (head == tail) {

@@ -23,11 +23,12 @@ final class ProducerProcess implements AutoCloseable {
     ProducerProcess(int port, long events, long seconds, int nodes, long rate, String module, boolean waitForGo,
                     int memoryEvents) throws IOException {
         long heapMb = Math.max(1024, 512 + (long) memoryEvents * 400 / (1 << 20)); // ~400 bytes per event held
-        List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx" + heapMb + "m",
-                "-Dorg.slf4j.simpleLogger.defaultLogLevel=warn",
-                "-cp", System.getProperty("java.class.path"), BenchProducer.class.getName(), "127.0.0.1",
+        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Xmx" + heapMb + "m", "-Dorg.slf4j.simpleLogger.defaultLogLevel=warn"));
+        cmd.addAll(extraJvmOptions(module));
+        cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), BenchProducer.class.getName(), "127.0.0.1",
                 Integer.toString(port), Long.toString(events), Long.toString(seconds), Integer.toString(nodes),
-                Long.toString(rate), module, waitForGo ? "go" : "now", Integer.toString(memoryEvents));
+                Long.toString(rate), module, waitForGo ? "go" : "now", Integer.toString(memoryEvents)));
         process = new ProcessBuilder(cmd).redirectErrorStream(true).start();
         reader = new Thread(() -> {
             try (BufferedReader r = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
@@ -45,6 +46,24 @@ final class ProducerProcess implements AutoCloseable {
             }
         }, "bench-producer-output");
         reader.start();
+    }
+
+    /**
+     * {@code FDNET_PRODUCER_JAVA_OPTS}, split on blanks: JVM options for the producer processes only (e.g. a
+     * flight recording), as {@code FDNET_JAVA_OPTS} is for the logger's JVM. {@code %m} becomes the producer's
+     * module ({@code sustained}, {@code latency}, {@code burst}), so each phase's recording gets its own file.
+     */
+    private static List<String> extraJvmOptions(String module) {
+        String opts = System.getenv("FDNET_PRODUCER_JAVA_OPTS");
+        List<String> out = new ArrayList<>();
+        if (opts != null) {
+            for (String o : opts.trim().split("\\s+")) {
+                if (!o.isEmpty()) {
+                    out.add(o.replace("%m", module));
+                }
+            }
+        }
+        return out;
     }
 
     boolean isAlive() {

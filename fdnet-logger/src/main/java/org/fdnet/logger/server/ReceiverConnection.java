@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.net.Socket;
 import java.sql.SQLException;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.NodeNamedEvent;
@@ -24,9 +25,10 @@ import org.slf4j.LoggerFactory;
 
 /**
  * A core's connection to the receiver server. After the handshake (which names the run and tells the core
- * the last committed sequence number), it reads EVENTS frames: a frame is decoded and checked whole before
- * any of its events is taken, events the run already delivered are skipped (a reconnecting core sends again
- * what was not acknowledged), and the core's node ids become global source ids. Before each frame it waits
+ * the last committed sequence number), it reads EVENTS frames: a frame is checked whole before any of its
+ * events is taken, then each event is built once with its global source id (the core's node ids, looked up
+ * once per node), and events the run already delivered are skipped (a reconnecting core sends again what was
+ * not acknowledged). Before each frame it waits
  * while the cache is at its critical level: the socket is not read, and TCP pushes back on the core.
  * The writer's commits come back as ACK frames.
  */
@@ -36,7 +38,13 @@ final class ReceiverConnection extends Connection {
     private final EventCache cache;
     private final SourceDirectory directory;
     private final RunOwners owners;
+    /** Node ids of a core up to here are looked up in {@link #knownGlobalIds}: 1 MiB of table at most. */
+    private static final int MAX_TABLED_LOCAL_ID = 1 << 18;
+
     private RunProgress run;
+    /** Global id + 1 by the core's node id, 0 where not looked up yet: the directory is asked once per node. */
+    private int[] knownGlobalIds = new int[64];
+    private final EventCodec.SourceIdMap globalIds = this::globalId;
     private final Object ackLock = new Object();
     private long ackWanted;
 
@@ -111,7 +119,6 @@ final class ReceiverConnection extends Connection {
 
     @Override
     protected void serve(FrameReader in) throws IOException, InterruptedException {
-        List<NetworkEvent> decoded = new ArrayList<>(Protocol.MAX_EVENTS_PER_FRAME);
         while (true) {
             if (cache.pressured()) {
                 state(ConnectionState.WAITING);
@@ -128,19 +135,24 @@ final class ReceiverConnection extends Connection {
             }
             long firstSeq = f.getLong();
             int count = f.getCount(EventCodec.MIN_EVENT_BYTES);
-            decoded.clear();
+            int events = f.position();
             for (int i = 0; i < count; i++) {
-                decoded.add(EventCodec.read(f));
+                EventCodec.skip(f); // the whole frame is checked before any of it is taken
             }
             f.expectEnd();
             if (firstSeq < 1) {
                 throw new ProtocolException("EVENTS with sequence number " + firstSeq + " (they start at 1)");
             }
-            take(firstSeq, decoded);
+            f.rewind(events);
+            take(f, firstSeq, count);
         }
     }
 
-    private void take(long firstSeq, List<NetworkEvent> decoded) throws IOException, InterruptedException {
+    /**
+     * Takes the events of a checked frame (its cursor on the first event): each is built once, with its global
+     * source id; those the run already delivered are stepped over.
+     */
+    private void take(Frame f, long firstSeq, int count) throws IOException, InterruptedException {
         synchronized (run) {
             if (!owners.owns(run, this)) {
                 throw new IOException("run taken over by a newer connection");
@@ -151,13 +163,14 @@ final class ReceiverConnection extends Connection {
                         + ", got " + firstSeq);
             }
             long now = System.nanoTime();
-            List<CachedEvent> fresh = new ArrayList<>(decoded.size());
-            for (int i = 0; i < decoded.size(); i++) {
+            List<CachedEvent> fresh = new ArrayList<>(count);
+            for (int i = 0; i < count; i++) {
                 long seq = firstSeq + i;
                 if (seq <= received) {
+                    EventCodec.skip(f);
                     continue;
                 }
-                NetworkEvent e = EventCodec.withSource(decoded.get(i), globalId(decoded.get(i).sourceId()));
+                NetworkEvent e = EventCodec.read(f, globalIds);
                 if (e instanceof NodeNamedEvent named) {
                     directory.named(run, named);
                 }
@@ -165,22 +178,42 @@ final class ReceiverConnection extends Connection {
             }
             if (!fresh.isEmpty()) {
                 cache.add(fresh);
-                run.received(firstSeq + decoded.size() - 1);
+                run.received(firstSeq + count - 1);
             }
         }
     }
 
-    /** The global id; when a new block of ids cannot be had (database down) this core waits. */
+    /**
+     * The global id of a core's node id: from this connection's table once known (a run's mapping never
+     * changes), else from the directory — when a new block of ids cannot be had (database down) this core waits.
+     */
     private int globalId(int localId) throws InterruptedException {
+        if (localId >= 0 && localId < knownGlobalIds.length && knownGlobalIds[localId] != 0) {
+            return knownGlobalIds[localId] - 1;
+        }
         while (true) {
             try {
-                return directory.globalId(run, localId);
+                int id = directory.globalId(run, localId);
+                remember(localId, id);
+                return id;
             } catch (SQLException e) {
                 LOG.warn("{}: cannot reserve source ids ({}); waiting for the database", describe(), e.getMessage());
                 state(ConnectionState.WAITING);
                 Thread.sleep(1000);
             }
         }
+    }
+
+    /** Keeps small non-negative node ids (a core numbers its nodes from 0) in a table; others ask the directory. */
+    private void remember(int localId, int globalId) {
+        if (localId < 0 || localId >= MAX_TABLED_LOCAL_ID || globalId == Integer.MAX_VALUE) {
+            return;
+        }
+        if (localId >= knownGlobalIds.length) {
+            knownGlobalIds = Arrays.copyOf(knownGlobalIds, Math.min(MAX_TABLED_LOCAL_ID,
+                    Math.max(localId + 1, knownGlobalIds.length * 2)));
+        }
+        knownGlobalIds[localId] = globalId + 1; // 0: not known yet
     }
 
     @Override

@@ -76,6 +76,28 @@ class EventCacheTest {
     }
 
     @Test
+    void shouldFreeEachCommittedEventExactlyOnceWhenNodesInterleaveInABatch() throws Exception {
+        // round-robin, as a core sends: one eviction pass per node must free every event of it, and no more
+        List<CachedEvent> offered = new ArrayList<>();
+        cache.subscribe(offered::add, new int[] {3});
+        for (int t = 0; t < 10; t++) {
+            for (int node = 1; node <= 4; node++) {
+                cache.add(events(node, t, 1));
+            }
+        }
+        cache.committed(cache.takeBatch(30)); // times 0..6 of every node, 7 of nodes 1 and 2
+        assertThat(cache.history(1, 0, 100, true).events()).extracting(NetworkEvent::time).containsExactly(8L, 9L);
+        assertThat(cache.history(4, 0, 100, true).events()).extracting(NetworkEvent::time).containsExactly(7L, 8L, 9L);
+        assertThat(cache.history(3, 0, 100, true).events()).hasSize(10); // monitored: held until sent
+        assertThat(cache.status().usedBytes()).isEqualTo((40 - 30 + 7) * 100L);
+        cache.delivered(offered);
+        assertThat(cache.status().usedBytes()).isEqualTo(10 * 100L);
+        cache.committed(cache.takeBatch(10));
+        assertThat(cache.status().usedBytes()).isZero();
+        assertThat(cache.status().events()).isZero();
+    }
+
+    @Test
     void shouldPressureAtTheCriticalLevelAndReleaseOnlyAtTheNormalLevel() throws Exception {
         cache.add(events(1, 0, 79));
         assertThat(cache.pressured()).isFalse();

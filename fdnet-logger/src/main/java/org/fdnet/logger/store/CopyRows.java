@@ -9,6 +9,17 @@ import java.util.Arrays;
  * escaped inside text values.
  */
 final class CopyRows {
+    /** The tens and ones digit of 0..99: numbers are written two digits per division (time stamps have 16). */
+    private static final byte[] DIGIT_TENS = new byte[100];
+    private static final byte[] DIGIT_ONES = new byte[100];
+
+    static {
+        for (int i = 0; i < 100; i++) {
+            DIGIT_TENS[i] = (byte) ('0' + i / 10);
+            DIGIT_ONES[i] = (byte) ('0' + i % 10);
+        }
+    }
+
     private byte[] buf = new byte[1 << 16];
     private int len;
     private boolean rowStarted;
@@ -43,17 +54,30 @@ final class CopyRows {
             buf[len++] = '-';
             v = -v;
         }
-        int start = len;
-        do {
-            buf[len++] = (byte) ('0' + (v % 10));
-            v /= 10;
-        } while (v != 0);
-        for (int i = start, j = len - 1; i < j; i++, j--) {
-            byte t = buf[i];
-            buf[i] = buf[j];
-            buf[j] = t;
+        int end = len + digits(v);
+        int at = end;
+        while (v >= 100) {
+            int pair = (int) (v % 100);
+            v /= 100;
+            buf[--at] = DIGIT_ONES[pair];
+            buf[--at] = DIGIT_TENS[pair];
         }
+        int rest = (int) v;
+        buf[--at] = DIGIT_ONES[rest];
+        if (rest >= 10) {
+            buf[--at] = DIGIT_TENS[rest];
+        }
+        len = end;
         return this;
+    }
+
+    /** How many decimal digits a non-negative number has. */
+    private static int digits(long v) {
+        int n = 1;
+        for (long bound = 10; n < 19 && v >= bound; bound *= 10) {
+            n++;
+        }
+        return n;
     }
 
     CopyRows text(String v) {

@@ -109,7 +109,6 @@ public final class EventStore implements AutoCloseable {
         List<CachedEvent> relations = new ArrayList<>();
         List<CachedEvent> commands = new ArrayList<>();
         List<CachedEvent> names = new ArrayList<>();
-        Map<RunProgress, Long> lastSeq = new HashMap<>();
         for (CachedEvent e : batch) {
             NetworkEvent ev = e.event();
             if (ev instanceof DataValueEvent) {
@@ -121,8 +120,8 @@ public final class EventStore implements AutoCloseable {
             } else {
                 names.add(e);
             }
-            lastSeq.merge(e.run(), e.seq(), Math::max);
         }
+        Map<RunProgress, Long> lastSeq = lastSeqByRun(batch);
         CopyRows rows = copyRows.get();
         try {
             saveMappings(c, mappings);
@@ -219,10 +218,7 @@ public final class EventStore implements AutoCloseable {
      * committed? Its runs' watermarks were updated in the same transaction, so the database knows.
      */
     public boolean wasCommitted(List<CachedEvent> batch) throws SQLException {
-        Map<RunProgress, Long> lastSeq = new HashMap<>();
-        for (CachedEvent e : batch) {
-            lastSeq.merge(e.run(), e.seq(), Math::max);
-        }
+        Map<RunProgress, Long> lastSeq = lastSeqByRun(batch);
         for (Map.Entry<RunProgress, Long> r : lastSeq.entrySet()) {
             List<Long> stored = query("SELECT committed_seq FROM fdnet_run WHERE run_id = " + r.getKey().runId(),
                     rs -> rs.getLong(1));
@@ -234,6 +230,31 @@ public final class EventStore implements AutoCloseable {
             r.getKey().committed(r.getValue());
         }
         return true;
+    }
+
+    /**
+     * Each run's highest sequence number in the batch. A batch holds long stretches of one run's events, so the
+     * maximum is kept in a local and boxed into the map only where the run changes, not once per event.
+     */
+    static Map<RunProgress, Long> lastSeqByRun(List<CachedEvent> batch) {
+        Map<RunProgress, Long> lastSeq = new HashMap<>();
+        RunProgress run = null;
+        long max = Long.MIN_VALUE;
+        for (CachedEvent e : batch) {
+            if (e.run() != run) {
+                if (run != null) {
+                    lastSeq.merge(run, max, Math::max);
+                }
+                run = e.run();
+                max = e.seq();
+            } else if (e.seq() > max) {
+                max = e.seq();
+            }
+        }
+        if (run != null) {
+            lastSeq.merge(run, max, Math::max);
+        }
+        return lastSeq;
     }
 
     private static void copy(CopyManager copy, CopyRows rows, String sql) throws SQLException {

@@ -46,4 +46,33 @@ class CopyOrderTest {
         String text = new String(rows.bytes(), 0, rows.length(), StandardCharsets.UTF_8);
         assertThat(text).isEqualTo("0\t-42\t" + Long.MIN_VALUE + "\t" + Long.MAX_VALUE + "\ta\\tb\\\\c\\nd\\re\u00e9\n");
     }
+
+    @Test
+    void shouldWriteEveryNumberAsLongToStringWould() {
+        Random random = new Random(2004);
+        long[] edges = {1, 9, 10, 99, 100, 101, 999, 1000, 1_700_000_000_000_000L, 999_999_999_999_999_999L,
+                1_000_000_000_000_000_000L, -1, -10, -100};
+        CopyRows rows = new CopyRows();
+        StringBuilder expected = new StringBuilder();
+        for (int i = 0; i < 2000; i++) {
+            long v = i < edges.length ? edges[i] : random.nextLong() >> random.nextInt(64);
+            rows.number(v).endRow();
+            expected.append(v).append('\n');
+        }
+        assertThat(new String(rows.bytes(), 0, rows.length(), StandardCharsets.US_ASCII)).isEqualTo(expected.toString());
+    }
+
+    @Test
+    void shouldFindEachRunsHighestSequenceNumberWhereRunsInterleave() {
+        RunProgress other = new RunProgress(2, UUID.randomUUID(), 0);
+        List<CachedEvent> batch = List.of(
+                new CachedEvent(new DataValueEvent(1, 1, ValueType.LONG, "1"), run, 5, 1, 0),
+                new CachedEvent(new DataValueEvent(1, 2, ValueType.LONG, "1"), run, 7, 1, 0),
+                new CachedEvent(new DataValueEvent(2, 1, ValueType.LONG, "1"), other, 3, 1, 0),
+                new CachedEvent(new DataValueEvent(1, 3, ValueType.LONG, "1"), run, 6, 1, 0),
+                new CachedEvent(new DataValueEvent(2, 2, ValueType.LONG, "1"), other, 4, 1, 0));
+        assertThat(EventStore.lastSeqByRun(batch)).containsOnly(
+                org.assertj.core.api.Assertions.entry(run, 7L), org.assertj.core.api.Assertions.entry(other, 4L));
+        assertThat(EventStore.lastSeqByRun(List.of())).isEmpty();
+    }
 }

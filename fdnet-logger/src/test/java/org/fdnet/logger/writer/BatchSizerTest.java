@@ -39,4 +39,52 @@ class BatchSizerTest {
         assertThat(sizer.maxRows()).isEqualTo(1000);
         assertThat(sizer.next(1_000_000)).isEqualTo(1000);
     }
+
+    @Test
+    void shouldTakeTheWholeBacklogWithOneLane() {
+        BatchSizer sizer = grown(new BatchSizer(1000, 200_000, 1));
+        assertThat(sizer.next(180_000, 0)).isEqualTo(180_000);
+        assertThat(sizer.pipelineFloor()).isEqualTo(1000);
+    }
+
+    @Test
+    void shouldCutAPipelinedBatchToAShareThatLeavesOneReadyBehindEveryLane() {
+        BatchSizer sizer = grown(new BatchSizer(1000, 200_000, 2));
+        // 180,000 held, none in flight: a third, so the second lane and the next free one find a batch ready.
+        assertThat(sizer.next(180_000, 0)).isEqualTo(60_000);
+        // 120,000 waiting and 60,000 in flight: still a third of what the writer holds.
+        assertThat(sizer.next(120_000, 60_000)).isEqualTo(60_000);
+        // A larger backlog: the share grows (at most twofold a batch), up to the maximum.
+        assertThat(sizer.next(900_000, 200_000)).isEqualTo(120_000);
+        assertThat(sizer.next(900_000, 200_000)).isEqualTo(200_000);
+    }
+
+    @Test
+    void shouldNotCutAPipelinedBatchBelowTheFloor() {
+        BatchSizer sizer = grown(new BatchSizer(1000, 200_000, 2));
+        assertThat(sizer.pipelineFloor()).isEqualTo(BatchSizer.PIPELINE_FLOOR_ROWS);
+        assertThat(sizer.next(15_000, 0)).isEqualTo(10_000);
+        assertThat(sizer.next(4_000, 20_000)).isEqualTo(4_000);
+    }
+
+    @Test
+    void shouldKeepTheThesisSizeAtLowLoadWithSeveralLanes() {
+        BatchSizer sizer = new BatchSizer(1000, 200_000, 2);
+        assertThat(sizer.next(0, 0)).isEqualTo(1000);
+        assertThat(sizer.next(1000, 0)).isEqualTo(1000);
+        assertThat(sizer.next(1200, 1000)).isEqualTo(1200);
+    }
+
+    @Test
+    void shouldBoundThePipelineFloorByTheBaseAndTheMaximum() {
+        assertThat(new BatchSizer(1000, 4000, 2).pipelineFloor()).isEqualTo(4000);
+        assertThat(new BatchSizer(20_000, 200_000, 2).pipelineFloor()).isEqualTo(20_000);
+    }
+
+    private static BatchSizer grown(BatchSizer sizer) {
+        for (int i = 0; i < 20; i++) {
+            sizer.next(1_000_000_000, 0);
+        }
+        return sizer;
+    }
 }

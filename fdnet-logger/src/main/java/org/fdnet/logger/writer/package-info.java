@@ -12,5 +12,7 @@
  *        └── pressured / flush(): no timer, back to back ◀────────┘ on failure: it and the batches behind it
  *                                                                   (rolled back) again, in order, one at a time
  * </pre>
+ * With several connections a batch takes a share of what the writer holds (waiting + in flight, over
+ * connections + 1), so a batch is ready when a lane frees even when the clients' windows bound the backlog.
  */
 package org.fdnet.logger.writer;

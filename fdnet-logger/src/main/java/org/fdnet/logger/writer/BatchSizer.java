@@ -8,16 +8,15 @@ package org.fdnet.logger.writer;
  * when the writer is behind; as soon as the backlog falls, the batch falls with it, down to the base size.
  * The cap in bytes is applied when the batch is taken ({@code EventCache.takeBatch}).
  *
- * <p>With several lanes (connections) a batch takes a share of the backlog, not all of it: the events the
- * writer holds — waiting in the cache plus in flight on the lanes — divided by {@code lanes + 1}, so that
- * under a closed loop (clients whose window of unacknowledged events is bounded) every lane has a batch and
- * one more is ready when a lane frees (Little's law: the events circulating are what keeps the lanes busy;
- * a batch that takes the whole backlog leaves a freed lane idle until the ACK → client → TCP → receiver
- * cycle refills the cache). The share never goes below {@link #pipelineFloor()} (10,000 events, or the
- * base / maximum size when those bound it) so commits stay amortised.
+ * <p>With several lanes (connections) the writer hands a free lane its next batch as soon as
+ * {@link #pipelineFloor()} events are ready (10,000, or the base / maximum size when those bound it) — not a
+ * batch of the base size, which would hold the lane for a few rows until the batch before it commits, and
+ * not only after every lane is done. The batch then takes what is ready (growing as above): under a closed
+ * loop (clients whose window of unacknowledged events is bounded) the batch sizes follow what arrives while
+ * the lanes write, and no lane waits for the ACK → client → TCP → receiver cycle while enough is ready.
  */
 final class BatchSizer {
-    /** The smallest share of the backlog a pipelined batch is cut to (commits stay a small part of its cost). */
+    /** The fewest ready events worth a batch on a free lane while another is in flight (commits stay amortised). */
     static final int PIPELINE_FLOOR_ROWS = 10_000;
 
     private final int baseRows;
@@ -38,23 +37,21 @@ final class BatchSizer {
         this.current = baseRows;
     }
 
-    /** The size of the next batch when {@code backlog} events are waiting and none is in flight. */
+    /** The size of the next batch when {@code backlog} events are waiting to be written. */
     int next(int backlog) {
-        return next(backlog, 0);
+        return next(backlog, false);
     }
 
     /**
-     * The size of the next batch when {@code waiting} events wait in the cache and {@code inFlight} events
-     * are being written on the other lanes.
+     * As {@link #next(int)}; {@code besideAnother}: the batch goes to a free lane while another is in flight,
+     * so it takes at least {@link #pipelineFloor()} of the backlog, however small the last batch was.
      */
-    int next(int waiting, int inFlight) {
+    int next(int backlog, boolean besideAnother) {
         int grown = (int) Math.min(maxRows, Math.max((long) baseRows, 2L * current));
-        int wanted = grown;
-        if (lanes > 1) {
-            long share = ((long) waiting + inFlight) / (lanes + 1);
-            wanted = (int) Math.min(grown, Math.max(pipelineFloor, share));
+        if (besideAnother) {
+            grown = Math.max(grown, pipelineFloor());
         }
-        current = Math.max(baseRows, Math.min(waiting, wanted));
+        current = Math.max(baseRows, Math.min(backlog, grown));
         return current;
     }
 

@@ -35,9 +35,8 @@ import org.slf4j.LoggerFactory;
  * fails, N+1 is rolled back and both are written again in order, one at a time. A batch carrying new node
  * mappings or names is written only when nothing else is in flight (the one way two open transactions could
  * lock each other's rows); the connections' lock timeout turns any other such wait into a failure and retry.
- * To keep every lane busy when clients can only have so many events unacknowledged, a batch takes a share of
- * the backlog ({@link BatchSizer}: waiting plus in flight over connections + 1, at least its floor), and a
- * free lane gets the next batch as soon as that floor is ready. At low load (fewer ready while one is in
+ * To keep every lane busy when clients can only have so many events unacknowledged, a free lane gets the
+ * next batch — what is ready — as soon as {@link BatchSizer#pipelineFloor()} events are ready. At low load (fewer ready while one is in
  * flight) the in-flight batch commits first, so the thesis's batch size and timer keep their meaning.
  *
  * <p>Database lost: the same batch is retried every {@code reconnectDelayMillis}; after
@@ -49,7 +48,7 @@ import org.slf4j.LoggerFactory;
  */
 public final class BatchWriter implements Runnable {
     private static final Logger LOG = LoggerFactory.getLogger(BatchWriter.class);
-    /** How often a writer waiting for a share to fill a free lane looks whether the batch in flight committed. */
+    /** How often a writer waiting for the floor's worth of events for a free lane looks whether the batch in flight committed. */
     private static final long POLL_NANOS = TimeUnit.MILLISECONDS.toNanos(2);
 
     private final WriterSettings settings;
@@ -63,6 +62,7 @@ public final class BatchWriter implements Runnable {
     private volatile String databaseState = "connecting";
     private volatile long batches;
     private volatile long overlappedBatches;
+    private volatile long overlappedRows;
     private volatile long rolledBackBehind;
     private final LongAdder laneBusyNanos = new LongAdder();
     private volatile int lastBatchRows;
@@ -124,6 +124,11 @@ public final class BatchWriter implements Runnable {
     /** Batches handed to a connection while the one before was still in flight (the pipeline at work). */
     public long overlappedBatches() {
         return overlappedBatches;
+    }
+
+    /** Events in the batches counted by {@link #overlappedBatches()}. */
+    public long overlappedRows() {
+        return overlappedRows;
     }
 
     /**
@@ -228,7 +233,7 @@ public final class BatchWriter implements Runnable {
                 priority(cache.pressured());
                 long delay = urgent ? 0 : TimeUnit.MILLISECONDS.toNanos(settings.writingDelayMillis());
                 if (!inFlight.isEmpty() && !batchReadyNow(urgent, delay)) {
-                    // A lane is free while another writes: wait for a share worth a batch, looking every
+                    // A lane is free while another writes: wait for the floor's worth of events, looking every
                     // POLL for the batch in flight to commit. At low load it commits first and the next batch
                     // is taken by the thesis's batch size and timer, as with one connection.
                     cache.awaitUnwritten(sizer.pipelineFloor(), delay, POLL_NANOS);
@@ -239,7 +244,7 @@ public final class BatchWriter implements Runnable {
                 boolean timerExpired = System.nanoTime() - timerStart >= TimeUnit.MILLISECONDS.toNanos(settings.batchTimeoutMillis());
                 if (ready >= settings.batchSize() || (ready > 0 && (timerExpired || urgent))) {
                     int backlog = delay == 0 ? cache.unwrittenCount() : cache.readyUnwritten(sizer.maxRows(), delay);
-                    List<CachedEvent> batch = cache.takeBatch(Math.max(ready, Math.min(backlog, sizer.next(backlog, inFlightRows()))),
+                    List<CachedEvent> batch = cache.takeBatch(Math.max(ready, Math.min(backlog, sizer.next(backlog, !inFlight.isEmpty()))),
                             settings.maxBatchBytes());
                     lastBatchRows = batch.size();
                     List<NodeMapping> mappings = directory.unsavedMappings();
@@ -272,14 +277,6 @@ public final class BatchWriter implements Runnable {
         return ready >= floor || (urgent && ready > 0);
     }
 
-    private int inFlightRows() {
-        int rows = 0;
-        for (InFlight f : inFlight) {
-            rows += f.batch().size();
-        }
-        return rows;
-    }
-
     private static boolean carriesNames(List<CachedEvent> batch) {
         for (CachedEvent e : batch) {
             if (e.event() instanceof NodeNamedEvent) {
@@ -295,6 +292,7 @@ public final class BatchWriter implements Runnable {
                 : inFlight.peekLast().done();
         if (!inFlight.isEmpty()) {
             overlappedBatches++;
+            overlappedRows += batch.size();
         }
         WriterLane lane = lanes[nextLane];
         nextLane = (nextLane + 1) % lanes.length;

@@ -12,7 +12,7 @@
  *        └── pressured / flush(): no timer, back to back ◀────────┘ on failure: it and the batches behind it
  *                                                                   (rolled back) again, in order, one at a time
  * </pre>
- * With several connections a batch takes a share of what the writer holds (waiting + in flight, over
- * connections + 1), so a batch is ready when a lane frees even when the clients' windows bound the backlog.
+ * With several connections a free lane gets the next batch (what is ready, at least the pipeline floor of
+ * 10,000 events) while the others write, so no lane waits for the clients' ACK cycle while enough is ready.
  */
 package org.fdnet.logger.writer;

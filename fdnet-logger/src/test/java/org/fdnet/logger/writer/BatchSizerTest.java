@@ -43,36 +43,33 @@ class BatchSizerTest {
     @Test
     void shouldTakeTheWholeBacklogWithOneLane() {
         BatchSizer sizer = grown(new BatchSizer(1000, 200_000, 1));
-        assertThat(sizer.next(180_000, 0)).isEqualTo(180_000);
+        assertThat(sizer.next(180_000)).isEqualTo(180_000);
         assertThat(sizer.pipelineFloor()).isEqualTo(1000);
     }
 
     @Test
-    void shouldCutAPipelinedBatchToAShareThatLeavesOneReadyBehindEveryLane() {
+    void shouldTakeTheWholeBacklogWithSeveralLanesToo() {
         BatchSizer sizer = grown(new BatchSizer(1000, 200_000, 2));
-        // 180,000 held, none in flight: a third, so the second lane and the next free one find a batch ready.
-        assertThat(sizer.next(180_000, 0)).isEqualTo(60_000);
-        // 120,000 waiting and 60,000 in flight: still a third of what the writer holds.
-        assertThat(sizer.next(120_000, 60_000)).isEqualTo(60_000);
-        // A larger backlog: the share grows (at most twofold a batch), up to the maximum.
-        assertThat(sizer.next(900_000, 200_000)).isEqualTo(120_000);
-        assertThat(sizer.next(900_000, 200_000)).isEqualTo(200_000);
+        assertThat(sizer.next(180_000, true)).isEqualTo(180_000);
+        assertThat(sizer.next(50_000, false)).isEqualTo(50_000);
     }
 
     @Test
-    void shouldNotCutAPipelinedBatchBelowTheFloor() {
-        BatchSizer sizer = grown(new BatchSizer(1000, 200_000, 2));
+    void shouldGiveABatchBesideAnotherAtLeastTheFloorHoweverSmallTheLastOne() {
+        BatchSizer sizer = new BatchSizer(1000, 200_000, 2);
         assertThat(sizer.pipelineFloor()).isEqualTo(BatchSizer.PIPELINE_FLOOR_ROWS);
-        assertThat(sizer.next(15_000, 0)).isEqualTo(10_000);
-        assertThat(sizer.next(4_000, 20_000)).isEqualTo(4_000);
+        assertThat(sizer.next(50_000, true)).isEqualTo(10_000);
+        assertThat(sizer.next(50_000, true)).isEqualTo(20_000);
+        assertThat(sizer.next(4_000, true)).as("never more than the backlog").isEqualTo(4_000);
+        assertThat(sizer.next(50_000, false)).as("alone: doubling from the last").isEqualTo(8_000);
     }
 
     @Test
     void shouldKeepTheThesisSizeAtLowLoadWithSeveralLanes() {
         BatchSizer sizer = new BatchSizer(1000, 200_000, 2);
-        assertThat(sizer.next(0, 0)).isEqualTo(1000);
-        assertThat(sizer.next(1000, 0)).isEqualTo(1000);
-        assertThat(sizer.next(1200, 1000)).isEqualTo(1200);
+        assertThat(sizer.next(0, false)).isEqualTo(1000);
+        assertThat(sizer.next(1000, false)).isEqualTo(1000);
+        assertThat(sizer.next(1200, true)).isEqualTo(1200);
     }
 
     @Test
@@ -83,7 +80,7 @@ class BatchSizerTest {
 
     private static BatchSizer grown(BatchSizer sizer) {
         for (int i = 0; i < 20; i++) {
-            sizer.next(1_000_000_000, 0);
+            sizer.next(1_000_000_000);
         }
         return sizer;
     }

@@ -36,8 +36,9 @@ import org.slf4j.LoggerFactory;
  * mappings or names is written only when nothing else is in flight (the one way two open transactions could
  * lock each other's rows); the connections' lock timeout turns any other such wait into a failure and retry.
  * To keep every lane busy when clients can only have so many events unacknowledged, a free lane gets the
- * next batch — what is ready — as soon as {@link BatchSizer#pipelineFloor()} events are ready. At low load (fewer ready while one is in
- * flight) the in-flight batch commits first, so the thesis's batch size and timer keep their meaning.
+ * next batch — what is ready — as soon as {@link BatchSizer#pipelineFloor()} events are ready. At low load
+ * (fewer ready while one is in flight) the in-flight batch commits first, so the thesis's batch size and
+ * timer keep their meaning.
  *
  * <p>Database lost: the same batch is retried every {@code reconnectDelayMillis}; after
  * {@code reconnectAttempts} failed attempts (the thesis panel's "number of attempts") it reports the database
@@ -48,7 +49,7 @@ import org.slf4j.LoggerFactory;
  */
 public final class BatchWriter implements Runnable {
     private static final Logger LOG = LoggerFactory.getLogger(BatchWriter.class);
-    /** How often a writer waiting for the floor's worth of events for a free lane looks whether the batch in flight committed. */
+    /** How often a writer waiting to fill a free lane looks whether the batch in flight committed. */
     private static final long POLL_NANOS = TimeUnit.MILLISECONDS.toNanos(2);
 
     private final WriterSettings settings;

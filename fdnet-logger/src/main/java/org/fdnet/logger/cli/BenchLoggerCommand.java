@@ -143,6 +143,8 @@ public final class BenchLoggerCommand implements Callable<Integer> {
             lastCommit.set(now);
             sizes.add(b.size());
         });
+        long overlappedBefore = logger.writer().overlappedBatches();
+        long busyBefore = logger.writer().laneBusyNanos();
         ProducerProcess.Outcome out;
         try (ProducerProcess producer = new ProducerProcess(logger.receiverPort(), events, seconds, nodes, 0, "sustained", false, 0)) {
             while (producer.isAlive()) {
@@ -160,6 +162,9 @@ public final class BenchLoggerCommand implements Callable<Integer> {
         long lost = out.accepted() - nodes - stored;
         System.out.printf("  %,d events stored in %.1f s (first to last commit) in %,d batches: mean %,.0f, largest %,d%n",
                 stored, secs, sizes.count(), sizes.mean(), sizes.largest());
+        System.out.printf("  writer: %,d of them COPYed while another was in flight; its %d connections busy %.0f %% of that time%n",
+                logger.writer().overlappedBatches() - overlappedBefore, logger.writer().connections(),
+                100.0 * (logger.writer().laneBusyNanos() - busyBefore) / (logger.writer().connections() * 1e9 * secs));
         report.check("[1] logger sustained, whole run", String.format("%,.0f events/s", rate), ">= 500,000 events/s",
                 rate >= 500_000);
         report.check("[1] loss counted in the database", String.format("%,d (client accepted %,d values, stored %,d; client-side loss %d)",

@@ -10,6 +10,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.LongAdder;
 import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.logger.cache.CachedEvent;
 import org.fdnet.logger.cache.EventCache;
@@ -34,8 +35,10 @@ import org.slf4j.LoggerFactory;
  * fails, N+1 is rolled back and both are written again in order, one at a time. A batch carrying new node
  * mappings or names is written only when nothing else is in flight (the one way two open transactions could
  * lock each other's rows); the connections' lock timeout turns any other such wait into a failure and retry.
- * At low load (the next batch not ready when one is in flight) the in-flight batch is finished first, so the
- * thesis's batch size and timer keep their meaning.
+ * To keep every lane busy when clients can only have so many events unacknowledged, a free lane gets the
+ * next batch — what is ready — as soon as {@link BatchSizer#pipelineFloor()} events are ready. At low load
+ * (fewer ready while one is in flight) the in-flight batch commits first, so the thesis's batch size and
+ * timer keep their meaning.
  *
  * <p>Database lost: the same batch is retried every {@code reconnectDelayMillis}; after
  * {@code reconnectAttempts} failed attempts (the thesis panel's "number of attempts") it reports the database
@@ -46,6 +49,8 @@ import org.slf4j.LoggerFactory;
  */
 public final class BatchWriter implements Runnable {
     private static final Logger LOG = LoggerFactory.getLogger(BatchWriter.class);
+    /** How often a writer waiting to fill a free lane looks whether the batch in flight committed. */
+    private static final long POLL_NANOS = TimeUnit.MILLISECONDS.toNanos(2);
 
     private final WriterSettings settings;
     private final EventCache cache;
@@ -58,7 +63,9 @@ public final class BatchWriter implements Runnable {
     private volatile String databaseState = "connecting";
     private volatile long batches;
     private volatile long overlappedBatches;
+    private volatile long overlappedRows;
     private volatile long rolledBackBehind;
+    private final LongAdder laneBusyNanos = new LongAdder();
     private volatile int lastBatchRows;
     private volatile BatchObserver observer;
     private final BatchSizer sizer;
@@ -79,11 +86,11 @@ public final class BatchWriter implements Runnable {
         this.store = store;
         this.directory = directory;
         this.onGiveUp = onGiveUp;
-        this.sizer = new BatchSizer(settings.batchSize(), settings.maxBatchRows());
         this.lanes = new WriterLane[Math.max(1, settings.connections())];
         for (int i = 0; i < lanes.length; i++) {
             lanes[i] = new WriterLane(store, "fdnet-writer-connection-" + (i + 1));
         }
+        this.sizer = new BatchSizer(settings.batchSize(), settings.maxBatchRows(), lanes.length);
     }
 
     /** The writer's connections to the database ({@code writer.connections}). */
@@ -118,6 +125,20 @@ public final class BatchWriter implements Runnable {
     /** Batches handed to a connection while the one before was still in flight (the pipeline at work). */
     public long overlappedBatches() {
         return overlappedBatches;
+    }
+
+    /** Events in the batches counted by {@link #overlappedBatches()}. */
+    public long overlappedRows() {
+        return overlappedRows;
+    }
+
+    /**
+     * Time the lanes spent on batches, summed over the lanes (from a batch handed to its lane until its
+     * outcome, the wait for the batch before it included): divided by {@code connections() x} a period, how
+     * busy the lanes were.
+     */
+    public long laneBusyNanos() {
+        return laneBusyNanos.sum();
     }
 
     /** Batches rolled back because the batch before them failed (each then written again, in order). */
@@ -213,10 +234,10 @@ public final class BatchWriter implements Runnable {
                 priority(cache.pressured());
                 long delay = urgent ? 0 : TimeUnit.MILLISECONDS.toNanos(settings.writingDelayMillis());
                 if (!inFlight.isEmpty() && !batchReadyNow(urgent, delay)) {
-                    // Low load: no pipeline; finish what is in flight before waiting for the next batch.
-                    if (!finishAll()) {
-                        break;
-                    }
+                    // A lane is free while another writes: wait for the floor's worth of events, looking every
+                    // POLL for the batch in flight to commit. At low load it commits first and the next batch
+                    // is taken by the thesis's batch size and timer, as with one connection.
+                    cache.awaitUnwritten(sizer.pipelineFloor(), delay, POLL_NANOS);
                     continue;
                 }
                 long timerLeft = TimeUnit.MILLISECONDS.toNanos(settings.batchTimeoutMillis()) - (System.nanoTime() - timerStart);
@@ -224,7 +245,7 @@ public final class BatchWriter implements Runnable {
                 boolean timerExpired = System.nanoTime() - timerStart >= TimeUnit.MILLISECONDS.toNanos(settings.batchTimeoutMillis());
                 if (ready >= settings.batchSize() || (ready > 0 && (timerExpired || urgent))) {
                     int backlog = delay == 0 ? cache.unwrittenCount() : cache.readyUnwritten(sizer.maxRows(), delay);
-                    List<CachedEvent> batch = cache.takeBatch(Math.max(ready, Math.min(backlog, sizer.next(backlog))),
+                    List<CachedEvent> batch = cache.takeBatch(Math.max(ready, Math.min(backlog, sizer.next(backlog, !inFlight.isEmpty()))),
                             settings.maxBatchBytes());
                     lastBatchRows = batch.size();
                     List<NodeMapping> mappings = directory.unsavedMappings();
@@ -250,9 +271,11 @@ public final class BatchWriter implements Runnable {
         }
     }
 
+    /** With a batch in flight: enough ready for a batch on a free lane (the pipeline floor, or any when urgent). */
     private boolean batchReadyNow(boolean urgent, long delay) {
-        int ready = cache.readyUnwritten(settings.batchSize(), delay);
-        return ready >= settings.batchSize() || (urgent && ready > 0);
+        int floor = sizer.pipelineFloor();
+        int ready = cache.readyUnwritten(floor, delay);
+        return ready >= floor || (urgent && ready > 0);
     }
 
     private static boolean carriesNames(List<CachedEvent> batch) {
@@ -270,10 +293,18 @@ public final class BatchWriter implements Runnable {
                 : inFlight.peekLast().done();
         if (!inFlight.isEmpty()) {
             overlappedBatches++;
+            overlappedRows += batch.size();
         }
         WriterLane lane = lanes[nextLane];
         nextLane = (nextLane + 1) % lanes.length;
-        inFlight.addLast(new InFlight(batch, lane.write(batch, List.of(), before)));
+        inFlight.addLast(new InFlight(batch, timed(lane.write(batch, List.of(), before))));
+    }
+
+    /** Counts the lane's time on a batch, from now until its outcome, into {@link #laneBusyNanos()}. */
+    private CompletableFuture<Void> timed(CompletableFuture<Void> done) {
+        long start = System.nanoTime();
+        done.whenComplete((v, e) -> laneBusyNanos.add(System.nanoTime() - start));
+        return done;
     }
 
     /** Finishes the in-flight batches already done (commits seen promptly: ACKs and eviction not delayed). */
@@ -374,7 +405,7 @@ public final class BatchWriter implements Runnable {
                     if (failures > 0 && store.wasCommitted(batch)) {
                         LOG.info("the batch whose commit failed was committed after all; not writing it again");
                     } else {
-                        awaitCommit(lanes[0].write(batch, mappings, CompletableFuture.completedFuture(null)));
+                        awaitCommit(timed(lanes[0].write(batch, mappings, CompletableFuture.completedFuture(null))));
                     }
                     committed(batch, mappings);
                     if (failures > 0) {

@@ -12,5 +12,7 @@
  *        └── pressured / flush(): no timer, back to back ◀────────┘ on failure: it and the batches behind it
  *                                                                   (rolled back) again, in order, one at a time
  * </pre>
+ * With several connections a free lane gets the next batch (what is ready, at least the pipeline floor of
+ * 10,000 events) while the others write, so no lane waits for the clients' ACK cycle while enough is ready.
  */
 package org.fdnet.logger.writer;

@@ -80,6 +80,53 @@ class BatchGrowthTest {
         }
     }
 
+    @Test
+    void shouldGiveAFreeLaneAtLeastTheFloorBesideTheOtherUnderAClosedLoop() throws Exception {
+        // A client window of 60,000 unacknowledged events, two connections: a lane that frees while the other
+        // writes gets the next batch once the floor's worth is ready, never a batch of a few rows that holds it
+        // until the batch before commits.
+        int window = 60_000;
+        int total = 401_000; // 1,000 first, then 80 x 5,000
+        var config = database.fixture().loggerConfig().set(LoggerSetting.WRITER_BATCH_SIZE, "1000")
+                .set(LoggerSetting.WRITER_MAX_BATCH_ROWS, "200000").set(LoggerSetting.WRITER_CONNECTIONS, "2");
+        try (NetworkStateLogger logger = new NetworkStateLogger(config)) {
+            logger.start();
+            EventCache cache = logger.cache();
+            SourceDirectory directory = logger.directory();
+            RunProgress run = directory.openRun(UUID.randomUUID(), "closed-loop-core");
+            int[] ids = new int[10];
+            for (int i = 0; i < ids.length; i++) {
+                ids[i] = directory.globalId(run, i);
+            }
+            cache.add(events(cache, run, ids, 0, 1000));
+            awaitCommitted(cache, 1000);
+            List<Integer> sizes = new java.util.concurrent.CopyOnWriteArrayList<>();
+            logger.writer().observe(b -> sizes.add(b.size()));
+            long overlappedBefore = logger.writer().overlappedBatches();
+            long overlappedRowsBefore = logger.writer().overlappedRows();
+            int sent = 1000;
+            while (sent < total) {
+                if (sent - cache.committedCount() + 5000 <= window) {
+                    cache.add(events(cache, run, ids, sent, 5000));
+                    sent += 5000;
+                } else {
+                    Thread.sleep(1);
+                }
+            }
+            awaitCommitted(cache, total);
+
+            long overlapped = logger.writer().overlappedBatches() - overlappedBefore;
+            assertThat(overlapped).as("batches COPYed while another was in flight").isPositive();
+            assertThat(logger.writer().overlappedRows() - overlappedRowsBefore).as("their events")
+                    .isGreaterThanOrEqualTo(overlapped * BatchSizer.PIPELINE_FLOOR_ROWS);
+            assertThat(sizes.stream().mapToLong(Integer::longValue).sum()).isEqualTo(total - 1000);
+            assertThat(database.fixture().count("SELECT committed_seq FROM fdnet_run WHERE run_id = " + run.runId()))
+                    .isEqualTo(total);
+            assertThat(database.fixture().count("SELECT count(DISTINCT (sourceid, time)) FROM datavalue_log WHERE sourceid"
+                    + " IN (SELECT sourceid FROM fdnet_node WHERE run_id = " + run.runId() + ")")).isEqualTo(total);
+        }
+    }
+
     private static List<CachedEvent> events(EventCache cache, RunProgress run, int[] ids, int first, int n) {
         List<CachedEvent> out = new ArrayList<>(n);
         for (int i = first; i < first + n; i++) {

@@ -39,4 +39,49 @@ class BatchSizerTest {
         assertThat(sizer.maxRows()).isEqualTo(1000);
         assertThat(sizer.next(1_000_000)).isEqualTo(1000);
     }
+
+    @Test
+    void shouldTakeTheWholeBacklogWithOneLane() {
+        BatchSizer sizer = grown(new BatchSizer(1000, 200_000, 1));
+        assertThat(sizer.next(180_000)).isEqualTo(180_000);
+        assertThat(sizer.pipelineFloor()).isEqualTo(1000);
+    }
+
+    @Test
+    void shouldTakeTheWholeBacklogWithSeveralLanesToo() {
+        BatchSizer sizer = grown(new BatchSizer(1000, 200_000, 2));
+        assertThat(sizer.next(180_000, true)).isEqualTo(180_000);
+        assertThat(sizer.next(50_000, false)).isEqualTo(50_000);
+    }
+
+    @Test
+    void shouldGiveABatchBesideAnotherAtLeastTheFloorHoweverSmallTheLastOne() {
+        BatchSizer sizer = new BatchSizer(1000, 200_000, 2);
+        assertThat(sizer.pipelineFloor()).isEqualTo(BatchSizer.PIPELINE_FLOOR_ROWS);
+        assertThat(sizer.next(50_000, true)).isEqualTo(10_000);
+        assertThat(sizer.next(50_000, true)).isEqualTo(20_000);
+        assertThat(sizer.next(4_000, true)).as("never more than the backlog").isEqualTo(4_000);
+        assertThat(sizer.next(50_000, false)).as("alone: doubling from the last").isEqualTo(8_000);
+    }
+
+    @Test
+    void shouldKeepTheThesisSizeAtLowLoadWithSeveralLanes() {
+        BatchSizer sizer = new BatchSizer(1000, 200_000, 2);
+        assertThat(sizer.next(0, false)).isEqualTo(1000);
+        assertThat(sizer.next(1000, false)).isEqualTo(1000);
+        assertThat(sizer.next(1200, true)).isEqualTo(1200);
+    }
+
+    @Test
+    void shouldBoundThePipelineFloorByTheBaseAndTheMaximum() {
+        assertThat(new BatchSizer(1000, 4000, 2).pipelineFloor()).isEqualTo(4000);
+        assertThat(new BatchSizer(20_000, 200_000, 2).pipelineFloor()).isEqualTo(20_000);
+    }
+
+    private static BatchSizer grown(BatchSizer sizer) {
+        for (int i = 0; i < 20; i++) {
+            sizer.next(1_000_000_000);
+        }
+        return sizer;
+    }
 }

@@ -293,17 +293,12 @@ public final class EventCache {
      * from their first event (e.g. a run resumed after a restart).
      */
     public CacheAnswer history(int sourceId, long from, long to, boolean sourceSeenFromStart) {
-        // No cache lock: each container's timeline of this node is read under its own small lock, so the
-        // query waits at most for work on this one node, never for the writer's batch or the receivers.
-        ArrayList<NetworkEvent> out = new ArrayList<>(0);
-        long statesEvicted = states.range(sourceId, from, to, out);
-        int stateCount = out.size();
-        long commandsEvicted = commands.range(sourceId, from, to, out);
-        if (stateCount > 0 && out.size() > stateCount) {
-            out.sort(Comparator.comparingLong(NetworkEvent::time));
+        CachedAnswer cached = cachedHistory(sourceId, from, to, sourceSeenFromStart);
+        List<NetworkEvent> out = new ArrayList<>(cached.events().size());
+        for (CachedEvent e : cached.events()) {
+            out.add(e.event());
         }
-        boolean covered = sourceSeenFromStart && statesEvicted < from && commandsEvicted < from;
-        return new CacheAnswer(out, covered);
+        return new CacheAnswer(out, cached.complete());
     }
 
     /** Events of a node in a range, and whether they are all there are. */
@@ -315,10 +310,12 @@ public final class EventCache {
      * sender answers from when {@code complete}.
      */
     public CachedAnswer cachedHistory(int sourceId, long from, long to, boolean sourceSeenFromStart) {
+        // No cache lock: each container's timeline of this node is read under its own small lock, so the
+        // query waits at most for work on this one node, never for the writer's batch or the receivers.
         ArrayList<CachedEvent> out = new ArrayList<>(0);
-        long statesEvicted = states.rangeCached(sourceId, from, to, out);
+        long statesEvicted = states.range(sourceId, from, to, out);
         int stateCount = out.size();
-        long commandsEvicted = commands.rangeCached(sourceId, from, to, out);
+        long commandsEvicted = commands.range(sourceId, from, to, out);
         if (stateCount > 0 && out.size() > stateCount) {
             out.sort(Comparator.comparingLong(CachedEvent::time));
         }

@@ -33,15 +33,9 @@ class EventContainer {
      * the newest time of the node that had left memory at that instant ({@code Long.MIN_VALUE}: none). Safe
      * without the cache's lock.
      */
-    long range(int sourceId, long from, long to, ArrayList<NetworkEvent> out) {
+    long range(int sourceId, long from, long to, ArrayList<CachedEvent> out) {
         NodeTimeline t = timeline(sourceId, false);
         return t == null ? Long.MIN_VALUE : t.range(from, to, out);
-    }
-
-    /** As {@link #range}, the cached events themselves. */
-    long rangeCached(int sourceId, long from, long to, ArrayList<CachedEvent> out) {
-        NodeTimeline t = timeline(sourceId, false);
-        return t == null ? Long.MIN_VALUE : t.rangeCached(from, to, out);
     }
 
     /** Lets the node's committed, unmonitored head events go; returns the bytes freed. */

@@ -84,21 +84,9 @@ final class NodeTimeline {
      * {@link #evictedUpTo()} as of the same instant: both read under one hold of this timeline's monitor, so
      * "nothing at or after {@code from} has left" is true of exactly the events returned. {@code out} grows
      * once, to the exact size: a viewer's query makes little garbage (its collections would pause the logger).
+     * The cached events themselves: a sender reuses their kept wire bytes.
      */
-    synchronized long range(long from, long to, ArrayList<NetworkEvent> out) {
-        int first = lowerBound(from);
-        int end = firstAfter(to);
-        if (end > first) {
-            out.ensureCapacity(out.size() + end - first);
-            for (int i = first; i < end; i++) {
-                out.add(items[i].event());
-            }
-        }
-        return evictedUpTo;
-    }
-
-    /** As {@link #range}, the cached events themselves: a sender reuses their kept wire bytes. */
-    synchronized long rangeCached(long from, long to, ArrayList<CachedEvent> out) {
+    synchronized long range(long from, long to, ArrayList<CachedEvent> out) {
         int first = lowerBound(from);
         int end = firstAfter(to);
         if (end > first) {

@@ -39,8 +39,8 @@ class BatchGrowthTest {
                 ids[i] = directory.globalId(run, i);
             }
             long batchesBefore = logger.writer().batches();
-            cache.add(events(cache, run, ids, 0, 20_000));
-            awaitCommitted(cache, 20_000);
+            cache.add(WriterTestEvents.events(cache, run, ids, 0, 20_000));
+            WriterTestEvents.awaitCommitted(cache, 20_000);
 
             long backlogBatches = logger.writer().batches() - batchesBefore;
             // Batches of 100 would take 200; growing 100, 200, ... up to 5,000 takes a handful.
@@ -52,8 +52,8 @@ class BatchGrowthTest {
             assertThat(database.fixture().count("SELECT committed_seq FROM fdnet_run WHERE run_id = " + run.runId()))
                     .isEqualTo(20_000);
 
-            cache.add(events(cache, run, ids, 20_000, 30));
-            awaitCommitted(cache, 20_030);
+            cache.add(WriterTestEvents.events(cache, run, ids, 20_000, 30));
+            WriterTestEvents.awaitCommitted(cache, 20_030);
             assertThat(logger.writer().lastBatchRows()).isEqualTo(30);
             assertThat(logger.status().line()).contains("batch 30 (max 5,000)");
             assertThat(database.fixture().count("SELECT committed_seq FROM fdnet_run WHERE run_id = " + run.runId()))
@@ -72,8 +72,8 @@ class BatchGrowthTest {
             RunProgress run = logger.directory().openRun(UUID.randomUUID(), "bytes-core");
             int[] ids = {logger.directory().globalId(run, 0)};
             long before = logger.writer().batches();
-            cache.add(events(cache, run, ids, 0, 50_000));
-            awaitCommitted(cache, 50_000);
+            cache.add(WriterTestEvents.events(cache, run, ids, 0, 50_000));
+            WriterTestEvents.awaitCommitted(cache, 50_000);
             assertThat(logger.writer().batches() - before).isGreaterThanOrEqualTo(50_000 / 6_168);
             assertThat(database.fixture().count("SELECT count(*) FROM datavalue_log WHERE sourceid = " + ids[0]))
                     .isEqualTo(50_000);
@@ -98,8 +98,8 @@ class BatchGrowthTest {
             for (int i = 0; i < ids.length; i++) {
                 ids[i] = directory.globalId(run, i);
             }
-            cache.add(events(cache, run, ids, 0, 1000));
-            awaitCommitted(cache, 1000);
+            cache.add(WriterTestEvents.events(cache, run, ids, 0, 1000));
+            WriterTestEvents.awaitCommitted(cache, 1000);
             List<Integer> sizes = new java.util.concurrent.CopyOnWriteArrayList<>();
             logger.writer().observe(b -> sizes.add(b.size()));
             long overlappedBefore = logger.writer().overlappedBatches();
@@ -107,13 +107,13 @@ class BatchGrowthTest {
             int sent = 1000;
             while (sent < total) {
                 if (sent - cache.committedCount() + 5000 <= window) {
-                    cache.add(events(cache, run, ids, sent, 5000));
+                    cache.add(WriterTestEvents.events(cache, run, ids, sent, 5000));
                     sent += 5000;
                 } else {
                     Thread.sleep(1);
                 }
             }
-            awaitCommitted(cache, total);
+            WriterTestEvents.awaitCommitted(cache, total);
 
             long overlapped = logger.writer().overlappedBatches() - overlappedBefore;
             assertThat(overlapped).as("batches COPYed while another was in flight").isPositive();
@@ -124,21 +124,6 @@ class BatchGrowthTest {
                     .isEqualTo(total);
             assertThat(database.fixture().count("SELECT count(DISTINCT (sourceid, time)) FROM datavalue_log WHERE sourceid"
                     + " IN (SELECT sourceid FROM fdnet_node WHERE run_id = " + run.runId() + ")")).isEqualTo(total);
-        }
-    }
-
-    private static List<CachedEvent> events(EventCache cache, RunProgress run, int[] ids, int first, int n) {
-        List<CachedEvent> out = new ArrayList<>(n);
-        for (int i = first; i < first + n; i++) {
-            DataValueEvent e = new DataValueEvent(ids[i % ids.length], 1_000_000L + i, ValueType.DOUBLE, "0.5");
-            out.add(new CachedEvent(e, run, i + 1, cache.sizeOf(e), System.nanoTime()));
-        }
-        return out;
-    }
-
-    private static void awaitCommitted(EventCache cache, long count) throws InterruptedException {
-        while (cache.committedCount() < count) {
-            Thread.sleep(10);
         }
     }
 }

@@ -61,9 +61,9 @@ class PipelinedWriterTest {
             });
             int total = 150_000;
             for (int first = 0; first < total; first += 10_000) {
-                cache.add(events(cache, run, ids, first, 10_000));
+                cache.add(WriterTestEvents.events(cache, run, ids, first, 10_000));
             }
-            awaitCommitted(cache, total);
+            WriterTestEvents.awaitCommitted(cache, total);
 
             assertThat(logger.writer().connections()).isEqualTo(2);
             assertThat(logger.writer().overlappedBatches()).as("batches COPYed while another was in flight").isPositive();
@@ -85,8 +85,8 @@ class PipelinedWriterTest {
             EventCache cache = logger.cache();
             RunProgress run = logger.directory().openRun(UUID.randomUUID(), "failing-core");
             int[] ids = ids(logger.directory(), run, 20);
-            cache.add(events(cache, run, ids, 0, 1000));
-            awaitCommitted(cache, 1000);
+            cache.add(WriterTestEvents.events(cache, run, ids, 0, 1000));
+            WriterTestEvents.awaitCommitted(cache, 1000);
             int total = 1000;
             // Another session holds the run's row: batch N's watermark UPDATE waits for it until the writer's
             // lock timeout fails N; N+1, already COPYed, must be rolled back, then both are written in order.
@@ -98,7 +98,7 @@ class PipelinedWriterTest {
                 long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
                 while (logger.writer().rolledBackBehind() == 0 && System.nanoTime() < deadline) {
                     if (total < 300_000) {
-                        cache.add(events(cache, run, ids, total, 5000));
+                        cache.add(WriterTestEvents.events(cache, run, ids, total, 5000));
                         total += 5000;
                     }
                     Thread.sleep(50);
@@ -107,7 +107,7 @@ class PipelinedWriterTest {
                 holder.rollback();
             }
             assertThat(logger.writer().rolledBackBehind()).as("batches rolled back behind the failed one").isPositive();
-            awaitCommitted(cache, total);
+            WriterTestEvents.awaitCommitted(cache, total);
             assertStoredOnce(run, total);
             assertThat(logger.writer().databaseState()).isEqualTo("connected");
         }
@@ -183,7 +183,7 @@ class PipelinedWriterTest {
                 }
                 cache.add(chunk);
             }
-            awaitCommitted(cache, seq);
+            WriterTestEvents.awaitCommitted(cache, seq);
             assertThat(database.fixture().count("SELECT count(*) FROM fdnet_node WHERE node IS NOT NULL AND run_id = "
                     + run.runId())).isEqualTo(30);
             assertThat(database.fixture().count("SELECT count(*) FROM datavalue_log WHERE sourceid IN (SELECT sourceid"
@@ -202,8 +202,8 @@ class PipelinedWriterTest {
             int[] ids = ids(logger.directory(), run, 10);
             List<long[]> ranges = new ArrayList<>();
             logger.writer().observe(batch -> ranges.add(seqRange(batch)));
-            cache.add(events(cache, run, ids, 0, 30_000));
-            awaitCommitted(cache, 30_000);
+            cache.add(WriterTestEvents.events(cache, run, ids, 0, 30_000));
+            WriterTestEvents.awaitCommitted(cache, 30_000);
             assertThat(logger.writer().overlappedBatches()).isZero();
             for (int i = 1; i < ranges.size(); i++) {
                 assertThat(ranges.get(i)[0]).isEqualTo(ranges.get(i - 1)[1] + 1);
@@ -263,20 +263,5 @@ class PipelinedWriterTest {
         assertThat(database.fixture().count("SELECT count(DISTINCT (sourceid, time))" + ofRun)).isEqualTo(total);
         assertThat(database.fixture().count("SELECT committed_seq FROM fdnet_run WHERE run_id = " + run.runId()))
                 .isEqualTo(total);
-    }
-
-    private static List<CachedEvent> events(EventCache cache, RunProgress run, int[] ids, int first, int n) {
-        List<CachedEvent> out = new ArrayList<>(n);
-        for (int i = first; i < first + n; i++) {
-            DataValueEvent e = new DataValueEvent(ids[i % ids.length], 1_000_000L + i, ValueType.DOUBLE, "0.5");
-            out.add(new CachedEvent(e, run, i + 1, cache.sizeOf(e), System.nanoTime()));
-        }
-        return out;
-    }
-
-    private static void awaitCommitted(EventCache cache, long count) throws InterruptedException {
-        while (cache.committedCount() < count) {
-            Thread.sleep(10);
-        }
     }
 }

@@ -1,0 +1,32 @@
+package org.fdnet.logger.writer;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.fdnet.event.DataValueEvent;
+import org.fdnet.event.ValueType;
+import org.fdnet.logger.cache.CachedEvent;
+import org.fdnet.logger.cache.EventCache;
+import org.fdnet.logger.cache.RunProgress;
+
+/** The writer tests' events (Data values of the given nodes, one a microsecond) and their wait for commits. */
+final class WriterTestEvents {
+    private WriterTestEvents() {
+    }
+
+    /** {@code n} events from the {@code first}-th on, round-robin over {@code ids}, sequence numbers from first + 1. */
+    static List<CachedEvent> events(EventCache cache, RunProgress run, int[] ids, int first, int n) {
+        List<CachedEvent> out = new ArrayList<>(n);
+        for (int i = first; i < first + n; i++) {
+            DataValueEvent e = new DataValueEvent(ids[i % ids.length], 1_000_000L + i, ValueType.DOUBLE, "0.5");
+            out.add(new CachedEvent(e, run, i + 1, cache.sizeOf(e), System.nanoTime()));
+        }
+        return out;
+    }
+
+    /** Waits until the cache counts {@code count} events committed. */
+    static void awaitCommitted(EventCache cache, long count) throws InterruptedException {
+        while (cache.committedCount() < count) {
+            Thread.sleep(10);
+        }
+    }
+}

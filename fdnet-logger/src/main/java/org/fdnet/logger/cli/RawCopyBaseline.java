@@ -42,8 +42,7 @@ final class RawCopyBaseline {
     /** Rows per second for {@code rows} rows cut into batches of {@code sizes} (the last size repeats). */
     double run(long rows, int[] sizes, Format format) throws SQLException {
         try (Connection c = target.open(); Statement s = c.createStatement()) {
-            s.execute("DROP TABLE IF EXISTS bench_baseline");
-            s.execute("CREATE TABLE bench_baseline (LIKE datavalue_log INCLUDING ALL)");
+            freshBaselineTable(s);
             long t0 = System.nanoTime();
             copy(c, rows, sizes, format, 0, 1);
             double rate = rows / ((System.nanoTime() - t0) / 1e9);
@@ -66,15 +65,10 @@ final class RawCopyBaseline {
             done += n;
         }
         try (Connection c = target.open(); Statement s = c.createStatement()) {
-            s.execute("DROP TABLE IF EXISTS bench_baseline");
-            s.execute("CREATE TABLE bench_baseline (LIKE datavalue_log INCLUDING ALL)");
+            freshBaselineTable(s);
             List<Connection> open = new ArrayList<>();
             try {
-                for (int i = 0; i < connections; i++) {
-                    Connection o = target.open();
-                    o.setAutoCommit(false);
-                    open.add(o);
-                }
+                openConnections(open, connections, false);
                 CommitTurn turn = new CommitTurn();
                 AtomicReference<Exception> failure = new AtomicReference<>();
                 List<Thread> threads = new ArrayList<>();
@@ -161,13 +155,10 @@ final class RawCopyBaseline {
      */
     double runParallel(long rows, int batch, int connections) throws SQLException, InterruptedException {
         try (Connection c = target.open(); Statement s = c.createStatement()) {
-            s.execute("DROP TABLE IF EXISTS bench_baseline");
-            s.execute("CREATE TABLE bench_baseline (LIKE datavalue_log INCLUDING ALL)");
+            freshBaselineTable(s);
             List<Connection> open = new ArrayList<>();
             try {
-                for (int i = 0; i < connections; i++) {
-                    open.add(target.open());
-                }
+                openConnections(open, connections, true);
                 AtomicReference<SQLException> failure = new AtomicReference<>();
                 List<Thread> threads = new ArrayList<>();
                 long t0 = System.nanoTime();
@@ -261,5 +252,20 @@ final class RawCopyBaseline {
             throw new UncheckedIOException(e);
         }
         return bytes.toByteArray();
+    }
+
+    /** The baseline's table, empty, with the same definition (and primary key) as {@code datavalue_log}. */
+    private static void freshBaselineTable(Statement s) throws SQLException {
+        s.execute("DROP TABLE IF EXISTS bench_baseline");
+        s.execute("CREATE TABLE bench_baseline (LIKE datavalue_log INCLUDING ALL)");
+    }
+
+    /** Opens {@code n} connections into {@code open} (the caller closes them, also after a failure). */
+    private void openConnections(List<Connection> open, int n, boolean autoCommit) throws SQLException {
+        for (int i = 0; i < n; i++) {
+            Connection o = target.open();
+            open.add(o);
+            o.setAutoCommit(autoCommit);
+        }
     }
 }

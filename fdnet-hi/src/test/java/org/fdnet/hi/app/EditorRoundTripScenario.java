@@ -13,7 +13,6 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
-import java.util.prefs.Preferences;
 import javax.swing.AbstractButton;
 import javax.swing.JDialog;
 import javax.swing.JTextField;
@@ -49,22 +48,10 @@ public final class EditorRoundTripScenario {
 
     public static void main(String[] args) throws Exception {
         Path file = Path.of(args[0]);
-        Preferences prefs = Preferences.userRoot().node("org/fdnet/hi/test/" + ProcessHandle.current().pid());
-        int code = 1;
-        try {
+        ScenarioProcess.runAndExit(prefs -> {
             HiWindow window = HiApplication.start(file, new RecentFiles(prefs));
             new EditorRoundTripScenario(window).run(file);
-            System.out.println("SCENARIO PASSED");
-            code = 0;
-        } catch (Throwable t) {
-            System.out.println("SCENARIO FAILED: " + t);
-            for (StackTraceElement e : t.getStackTrace()) {
-                System.out.println("    at " + e);
-            }
-        } finally {
-            prefs.removeNode();
-        }
-        System.exit(code);
+        });
     }
 
     private void run(Path file) throws Exception {

@@ -18,7 +18,6 @@ import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
-import java.util.prefs.Preferences;
 import javax.swing.AbstractButton;
 import javax.swing.JDialog;
 import javax.swing.JList;
@@ -69,28 +68,18 @@ public final class LiveEditorScenario {
 
     public static void main(String[] args) throws Exception {
         Path images = Path.of(args[0]);
-        Preferences prefs = Preferences.userRoot().node("org/fdnet/hi/test/" + ProcessHandle.current().pid());
-        int code = 1;
-        try (ThrowawayLogger logger = new ThrowawayLogger()) {
-            LoggerClient events = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(), "live editor"));
-            try (InProcessRun run = InProcessRun.start(LiveTestNetwork.definition(),
-                    RuntimeOptions.defaults().workerThreads(2).sink(events), Optional.of(logger.viewerAddress()))) {
-                HiWindow window = HiApplication.start(null, new RecentFiles(prefs));
-                new LiveEditorScenario(window, run, images).run(logger.viewerAddress());
-            } finally {
-                events.close();
+        ScenarioProcess.runAndExit(prefs -> {
+            try (ThrowawayLogger logger = new ThrowawayLogger()) {
+                LoggerClient events = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(), "live editor"));
+                try (InProcessRun run = InProcessRun.start(LiveTestNetwork.definition(),
+                        RuntimeOptions.defaults().workerThreads(2).sink(events), Optional.of(logger.viewerAddress()))) {
+                    HiWindow window = HiApplication.start(null, new RecentFiles(prefs));
+                    new LiveEditorScenario(window, run, images).run(logger.viewerAddress());
+                } finally {
+                    events.close();
+                }
             }
-            System.out.println("SCENARIO PASSED");
-            code = 0;
-        } catch (Throwable t) {
-            System.out.println("SCENARIO FAILED: " + t);
-            for (StackTraceElement e : t.getStackTrace()) {
-                System.out.println("    at " + e);
-            }
-        } finally {
-            prefs.removeNode();
-        }
-        System.exit(code);
+        });
     }
 
     private LiveNetwork network() {

@@ -2,7 +2,6 @@ package org.fdnet.hi.app;
 
 import java.nio.file.Path;
 import java.util.concurrent.atomic.AtomicReference;
-import java.util.prefs.Preferences;
 import javax.swing.SwingUtilities;
 import org.fdnet.netinfo.xml.Problem;
 
@@ -15,23 +14,15 @@ public final class ProblemFileScenario {
     }
 
     public static void main(String[] args) throws Exception {
-        Preferences prefs = Preferences.userRoot().node("org/fdnet/hi/test/" + ProcessHandle.current().pid());
-        int code = 1;
-        try {
+        ScenarioProcess.runAndExit(prefs -> {
             HiWindow window = HiApplication.start(Path.of(args[0]), new RecentFiles(prefs));
             AtomicReference<String> failure = new AtomicReference<>();
             SwingUtilities.invokeAndWait(() -> failure.set(check(window)));
             SwingUtilities.invokeAndWait(window::dispose);
-            if (failure.get() == null) {
-                System.out.println("SCENARIO PASSED");
-                code = 0;
-            } else {
-                System.out.println("SCENARIO FAILED: " + failure.get());
+            if (failure.get() != null) {
+                throw new AssertionError(failure.get());
             }
-        } finally {
-            prefs.removeNode();
-        }
-        System.exit(code);
+        });
     }
 
     private static String check(HiWindow window) {

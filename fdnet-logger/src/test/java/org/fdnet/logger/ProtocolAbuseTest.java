@@ -80,7 +80,7 @@ class ProtocolAbuseTest {
         }
     }
 
-    private interface Abuse {
+    interface Abuse {
         void send(OutputStream out) throws IOException;
     }
 
@@ -91,7 +91,7 @@ class ProtocolAbuseTest {
     }
 
     /** Sends the abuse and returns the ERROR message the logger answers before it closes. */
-    private static String closedWithError(int port, Abuse abuse) throws IOException {
+    static String closedWithError(int port, Abuse abuse) throws IOException {
         try (Socket s = new Socket("127.0.0.1", port)) {
             s.setSoTimeout(10_000);
             abuse.send(s.getOutputStream());

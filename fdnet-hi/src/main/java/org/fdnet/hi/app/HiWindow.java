@@ -241,7 +241,9 @@ public final class HiWindow extends JFrame {
         if (current == null) {
             return;
         }
-        String name = current.file() == null ? "untitled" : current.file().getFileName().toString();
+        String networkName = current.editor().network().name() == null ? "untitled" : current.editor().network().name();
+        String name = current.file() == null ? networkName + " (not saved)"
+                : networkName + " (" + current.file().getFileName() + ")";
         String state = live == null ? offline == null ? "" : " (" + offline + ")"
                 : live.collecting() ? " (collecting changes for " + live.name() + ")" : " (live: " + live.name() + ")";
         setTitle((current.unsaved() ? "*" : "") + name + state + " — FDNet editor");

@@ -113,6 +113,9 @@ public final class LoggerCommand implements Callable<Integer> {
                 + " kill -HUP " + ProcessHandle.current().pid() + ", to retry a database reported DOWN; help lists the"
                 + " commands)%n", logger.receiverPort(), logger.senderPort());
         System.out.flush();
+        // A logger started in the background of an interactive shell must not be stopped (SIGTTIN) for reading
+        // its terminal: with TTIN ignored the read fails instead, and only the prompt ends.
+        sun.misc.Signal.handle(new sun.misc.Signal("TTIN"), sun.misc.SignalHandler.SIG_IGN);
         Thread prompt = new Thread(new LoggerPrompt(logger, new BufferedReader(new InputStreamReader(System.in,
                 StandardCharsets.UTF_8)), System.out), "fdnet-logger-prompt");
         prompt.setDaemon(true);

@@ -33,7 +33,8 @@ public final class LoggerPrompt implements Runnable {
                 answer(line.trim().toLowerCase(Locale.ROOT));
             }
         } catch (IOException e) {
-            out.println("fdnet logger: standard input closed (" + e.getMessage() + "); the prompt ends, the logger runs on");
+            out.println("fdnet logger: no commands from standard input (" + e.getMessage() + "); kill -HUP retries the"
+                    + " database instead; the logger runs on");
         }
     }
 

@@ -4,12 +4,11 @@ import java.util.ArrayList;
 import java.util.List;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.EditRefusedException;
-import org.fdnet.netinfo.ModelRules;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 
-/** The network- and module-level edits and their inverses. */
+/** The module-level edits and their inverses. */
 final class ModuleEdits {
     private ModuleEdits() {
     }
@@ -51,16 +50,6 @@ final class ModuleEdits {
             }
             network.deleteModule(module);
             return CompositeEdit.of(restore);
-        };
-    }
-
-    /** The network's own name (the thesis's Network frame); inverse: the old name back. */
-    static ReversibleEdit renameNetwork(String to) {
-        return target -> {
-            ModelRules.checkName("network", to);
-            String from = target.network().name();
-            target.network().setName(to);
-            return renameNetwork(from);
         };
     }
 

@@ -142,7 +142,7 @@ public final class UndoableNetworkEditor implements NetworkEditor {
         if (newName != null && newName.equals(network().name())) {
             return EditResult.ok();
         }
-        return apply("Rename network " + network().name(), ModuleEdits.renameNetwork(newName), null);
+        return apply("Rename network " + network().name(), NetworkEdits.rename(newName), null);
     }
 
     @Override

@@ -21,6 +21,7 @@ import org.fdnet.event.NetworkCommand;
 import org.fdnet.netinfo.ConnectionKind;
 import org.fdnet.netinfo.EditRefusedException;
 import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.ModuleTree;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
@@ -99,19 +100,15 @@ public final class RuntimeNetwork implements AutoCloseable {
     }
 
     /**
-     * Starts {@code definition} (copied): modules marked {@code loadatstart} are loaded.
+     * Starts {@code definition} (copied): modules marked {@code loadatstart} are loaded (nested ones when their parent
+     * is, {@link ModuleTree#atStart}).
      *
      * @throws RuntimeStartException listing every node that cannot be made; nothing keeps running
      */
     public static RuntimeNetwork start(NetworkInfo definition, RuntimeOptions options) throws RuntimeStartException {
         RuntimeNetwork network = new RuntimeNetwork(definition, options);
         network.flow.servants(network::servantsOf);
-        Set<String> atStart = new LinkedHashSet<>();
-        for (ModuleInfo m : definition.modules()) {
-            if (m.loadAtStart()) {
-                atStart.add(m.name());
-            }
-        }
+        Set<String> atStart = ModuleTree.atStart(definition);
         NetworkInfo copy = definition.copy();
         List<NetworkCommandDraft> loads = atStart.stream()
                 .map(m -> new NetworkCommandDraft(NetworkCommand.LOAD, m)).toList();

@@ -27,6 +27,7 @@ import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.loading.NodeClassResolver;
+import org.fdnet.runtime.servant.ServantRegistry;
 import org.fdnet.runtime.servant.Servants;
 import org.fdnet.runtime.servant.WholeNetwork;
 import org.slf4j.Logger;
@@ -72,6 +73,7 @@ public final class RuntimeNetwork implements AutoCloseable {
     private volatile List<RemoteLink> remoteLinks = List.of();
     private volatile boolean closed;
     private volatile WholeNetwork wholeNetwork;
+    private final ServantRegistry servantRegistry = new ServantRegistry(() -> wholeNetwork);
 
     private RuntimeNetwork(NetworkInfo definition, RuntimeOptions options) {
         options.seal();
@@ -149,6 +151,11 @@ public final class RuntimeNetwork implements AutoCloseable {
 
     private Servants servantsOf(RelationNode node) {
         return new Servants(this, node.ref, node.id, wholeNetwork);
+    }
+
+    /** This engine's servant tree, servant classes and messages (thesis Appendix 2). */
+    public ServantRegistry servantRegistry() {
+        return servantRegistry;
     }
 
     /**
@@ -679,6 +686,7 @@ public final class RuntimeNetwork implements AutoCloseable {
             timer.shutdownNow();
         }
         scheduler.close();
+        servantRegistry.close();
         for (RelationNode r : relations.values()) {
             r.alive = false;
             if (r.status != RelationStatus.FAILED) {

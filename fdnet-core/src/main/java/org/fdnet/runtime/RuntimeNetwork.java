@@ -150,7 +150,8 @@ public final class RuntimeNetwork implements AutoCloseable {
     }
 
     private Servants servantsOf(RelationNode node) {
-        return new Servants(this, node.ref, node.id, wholeNetwork);
+        return new Servants(this, node.ref, node.id, wholeNetwork,
+                () -> node.alive && node.status != RelationStatus.FAILED && relations.get(node.ref) == node);
     }
 
     /** This engine's servant tree, servant classes and messages (thesis Appendix 2). */

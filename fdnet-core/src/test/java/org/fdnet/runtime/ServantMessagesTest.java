@@ -50,6 +50,34 @@ class ServantMessagesTest {
         }
     }
 
+    /** Offers "forgetful" and never withdraws it: the engine still takes the servant away with the Relation. */
+    public static final class ForgetfulServant extends Relation {
+        private boolean offered;
+
+        @Override
+        protected void compute(RelationContext context) {
+            if (!offered) {
+                context.servants().offer("forgetful", (message, argument) -> Value.of(argument.asDouble() + 1));
+                offered = true;
+            }
+        }
+    }
+
+    @Test
+    void shouldTakeAServantAwayWithItsRelationEvenWhenTheRelationForgets() throws Exception {
+        NetworkInfo n = new NetworkInfo("forgetful");
+        n.addModule("Extra", true);
+        n.addNode("Extra", relation("Forgetful", ForgetfulServant.class.getName()));
+        try (RuntimeNetwork net = start(n, null)) {
+            eventually("the servant offered", () -> net.servantRegistry().find("forgetful") != null);
+            assertThat(net.controller().unload("Extra").executed()).isTrue();
+            assertThat(net.servantRegistry().find("forgetful")).isNull();
+            assertThat(net.controller().load("Extra").executed()).isTrue();
+            eventually("the new instance's servant offered at the same path",
+                    () -> net.servantRegistry().find("forgetful") != null);
+        }
+    }
+
     @Test
     void shouldReportARefusedMessageAsTheAskersStatus() throws Exception {
         NetworkInfo n = NetworkRepository.fromText(NetworkRepository.toText(example())

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.BooleanSupplier;
 import org.fdnet.runtime.Value;
 
 /**
@@ -16,12 +17,24 @@ public final class ServantNode {
     private final String name;
     private final ServantNode parent;
     private final MessageServant servant;
+    private final BooleanSupplier ownerRuns;
     private final Map<String, ServantNode> children = new LinkedHashMap<>();
 
     ServantNode(String name, ServantNode parent, MessageServant servant) {
+        this(name, parent, servant, () -> true);
+    }
+
+    /** @param ownerRuns whether the Relation that offered it still runs (a servant does not outlive it) */
+    ServantNode(String name, ServantNode parent, MessageServant servant, BooleanSupplier ownerRuns) {
         this.name = name;
         this.parent = parent;
         this.servant = servant;
+        this.ownerRuns = ownerRuns;
+    }
+
+    /** Whether the Relation that offered this servant still runs (always, for one no Relation offered). */
+    boolean ownerRuns() {
+        return ownerRuns.getAsBoolean();
     }
 
     public String name() {
@@ -74,8 +87,14 @@ public final class ServantNode {
         return children.computeIfAbsent(childName, n -> new ServantNode(n, this, answering));
     }
 
+    /** Adds {@code child} unless a servant of that name is there whose Relation still runs. */
     synchronized boolean adopt(ServantNode child) {
-        return children.putIfAbsent(child.name, child) == null;
+        ServantNode there = children.get(child.name);
+        if (there != null && there.ownerRuns()) {
+            return false;
+        }
+        children.put(child.name, child);
+        return true;
     }
 
     synchronized void release(ServantNode child) {

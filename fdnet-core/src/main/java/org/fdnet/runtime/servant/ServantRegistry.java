@@ -8,6 +8,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
 import org.fdnet.runtime.Value;
 import org.slf4j.Logger;
@@ -125,12 +126,21 @@ public final class ServantRegistry implements AutoCloseable {
      * @throws MessageRefusedException when the path is malformed or a servant is already there
      */
     public ServantNode offer(String path, MessageServant servant) {
+        return offer(path, servant, () -> true);
+    }
+
+    /**
+     * {@link #offer(String, MessageServant)} on behalf of a Relation: the servant leaves the tree by itself once
+     * {@code ownerRuns} is false (the Relation failed, was unloaded, destroyed or replaced), even when the Relation
+     * did not withdraw it; a new instance of the Relation may then offer the same path.
+     */
+    public ServantNode offer(String path, MessageServant servant, BooleanSupplier ownerRuns) {
         List<String> names = parts(path);
         ServantNode parent = root;
         for (String name : names.subList(0, names.size() - 1)) {
             parent = parent.childOrAdd(name, null);
         }
-        ServantNode node = new ServantNode(names.get(names.size() - 1), parent, servant);
+        ServantNode node = new ServantNode(names.get(names.size() - 1), parent, servant, ownerRuns);
         if (!parent.adopt(node)) {
             throw new MessageRefusedException("servant path " + node.path() + " is taken");
         }
@@ -152,6 +162,10 @@ public final class ServantRegistry implements AutoCloseable {
             if (node == null) {
                 return null;
             }
+        }
+        if (!node.ownerRuns()) {
+            withdraw(node);
+            return null;
         }
         return node;
     }

@@ -1,6 +1,7 @@
 package org.fdnet.runtime.servant;
 
 import java.util.concurrent.CompletableFuture;
+import java.util.function.BooleanSupplier;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.Controller;
@@ -23,6 +24,7 @@ public final class Servants {
     private final ServantScope scope;
     private final Reflect reflect;
     private final ServantRegistry registry;
+    private final BooleanSupplier selfRuns;
 
     /** Servants of one engine: they see and change that engine's network. */
     public Servants(RuntimeNetwork network, NodeRef self, int selfId) {
@@ -34,6 +36,12 @@ public final class Servants {
      * host's nodes; with {@code null}, this engine's only.
      */
     public Servants(RuntimeNetwork network, NodeRef self, int selfId, WholeNetwork whole) {
+        this(network, self, selfId, whole, () -> true);
+    }
+
+    /** As above, for a Relation instance: {@code selfRuns} says whether it still runs (its servants go with it). */
+    public Servants(RuntimeNetwork network, NodeRef self, int selfId, WholeNetwork whole, BooleanSupplier selfRuns) {
+        this.selfRuns = selfRuns;
         this.self = self;
         this.controller = network.controllerFor(selfId);
         EngineScope engine = new EngineScope(network, controller);
@@ -107,9 +115,12 @@ public final class Servants {
         return registry.getServant(path);
     }
 
-    /** Puts {@code servant} at {@code path} for other Relations (on any host) to message; withdraw it in {@code close}. */
+    /**
+     * Puts {@code servant} at {@code path} for other Relations (on any host) to message; withdraw it in {@code close}.
+     * It also leaves the tree by itself once this Relation no longer runs.
+     */
     public ServantNode offer(String path, MessageServant servant) {
-        return registry.offer(path, servant);
+        return registry.offer(path, servant, selfRuns);
     }
 
     public void withdraw(ServantNode offered) {

@@ -216,10 +216,35 @@ public final class ServantRegistry implements AutoCloseable {
      * returns at once; {@code listener} hears the reply or the reason there is none, once.
      */
     public void sendMessage(String path, String message, Value argument, ReturnListener listener) {
+        Delivery delivery = new Delivery(path, message, argument, listener);
         try {
-            messaging.execute(() -> deliver(path, message, argument, listener));
+            messaging.execute(delivery);
         } catch (RejectedExecutionException e) {
-            listener.refused("the network has stopped: message " + message + " to " + path + " not sent");
+            delivery.notSent();
+        }
+    }
+
+    /** One message on its way; a message still queued when the network stops is refused, never dropped silently. */
+    private final class Delivery implements Runnable {
+        private final String path;
+        private final String message;
+        private final Value argument;
+        private final ReturnListener listener;
+
+        Delivery(String path, String message, Value argument, ReturnListener listener) {
+            this.path = path;
+            this.message = message;
+            this.argument = argument;
+            this.listener = listener;
+        }
+
+        @Override
+        public void run() {
+            deliver(path, message, argument, listener);
+        }
+
+        void notSent() {
+            tell(listener, null, "the network has stopped: message " + message + " to " + path + " not sent");
         }
     }
 
@@ -276,9 +301,11 @@ public final class ServantRegistry implements AutoCloseable {
         }
     }
 
-    /** Stops delivering: messages sent from now on are refused at once. */
+    /** Stops delivering: messages still queued and messages sent from now on are refused. */
     @Override
     public void close() {
-        messaging.shutdownNow();
+        for (Runnable queued : messaging.shutdownNow()) {
+            ((Delivery) queued).notSent();
+        }
     }
 }

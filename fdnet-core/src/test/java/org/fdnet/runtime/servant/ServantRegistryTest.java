@@ -3,7 +3,10 @@ package org.fdnet.runtime.servant;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.fdnet.runtime.Value;
 import org.junit.jupiter.api.AfterEach;
@@ -81,5 +84,34 @@ class ServantRegistryTest {
         assertThatThrownBy(() -> ask("echo", "any", 3)).hasRootCauseMessage("no servant at echo in this network");
         registry.close();
         assertThatThrownBy(() -> ask("echo", "any", 3)).hasRootCauseMessage("the network has stopped: message any to echo not sent");
+    }
+
+    @Test
+    void shouldTellEveryListenerWhenTheNetworkStopsWithMessagesStillWaiting() throws Exception {
+        CountDownLatch entered = new CountDownLatch(1);
+        CountDownLatch never = new CountDownLatch(1);
+        registry.offer("slow", (m, a) -> {
+            entered.countDown();
+            try {
+                never.await();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new MessageRefusedException("slow was interrupted");
+            }
+            return a;
+        });
+        List<CompletableFuture<String>> outcomes = new ArrayList<>();
+        for (int i = 0; i < 3; i++) {
+            CompletableFuture<String> outcome = new CompletableFuture<>();
+            registry.sendMessage("slow", "m" + i, Value.of(i), ReturnListener.of(v -> outcome.complete("answered"), outcome::complete));
+            outcomes.add(outcome);
+        }
+        assertThat(entered.await(10, TimeUnit.SECONDS)).isTrue();
+        registry.close();
+        List<String> told = new ArrayList<>();
+        for (CompletableFuture<String> outcome : outcomes) {
+            told.add(outcome.get(10, TimeUnit.SECONDS));
+        }
+        assertThat(told).doesNotContain("answered").contains("the network has stopped: message m2 to slow not sent");
     }
 }

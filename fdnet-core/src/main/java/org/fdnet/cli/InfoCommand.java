@@ -2,9 +2,11 @@ package org.fdnet.cli;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.Set;
 import java.util.concurrent.Callable;
 import org.fdnet.netinfo.ModuleCounts;
 import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.ModuleTree;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.xml.NetworkFileException;
 import org.fdnet.netinfo.xml.NetworkRepository;
@@ -39,13 +41,22 @@ public final class InfoCommand implements Callable<Integer> {
                 network.modules().size());
         String row = "%-20s %-6s %7s %10s %8s %8s%n";
         out.printf(row, "module", "load", "Datas", "Relations", "Readers", "Writers");
+        Set<String> atStart = ModuleTree.atStart(network);
         for (ModuleInfo m : network.modules()) {
             ModuleCounts c = m.counts();
-            out.printf(row, m.name(), m.loadAtStart() ? "start" : "later", c.datas(), c.relations(), c.readers(), c.writers());
+            out.printf(row, m.name(), loadColumn(m, atStart), c.datas(), c.relations(), c.readers(), c.writers());
         }
         ModuleCounts t = network.totalCounts();
         out.printf(row, "total", "", t.datas(), t.relations(), t.readers(), t.writers());
         out.flush();
         return 0;
+    }
+
+    /** start: loaded at start; parent: a nested module loaded with its parent, which is not; later: on request. */
+    private static String loadColumn(ModuleInfo m, Set<String> atStart) {
+        if (atStart.contains(m.name())) {
+            return "start";
+        }
+        return m.loadAtStart() ? "parent" : "later";
     }
 }

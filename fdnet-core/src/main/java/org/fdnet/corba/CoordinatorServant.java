@@ -10,7 +10,10 @@ import org.fdnet.corba.idl.NodeId;
 import org.fdnet.corba.idl.Outcome;
 import org.fdnet.corba.idl.Refused;
 import org.fdnet.corba.idl.UnknownNode;
+import org.fdnet.corba.idl.UnknownServant;
 import org.fdnet.corba.idl.Value;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.function.Supplier;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.runtime.ChangeOutcome;
@@ -74,6 +77,30 @@ public final class CoordinatorServant extends NetworkCoordinatorPOA {
             case ModuleOp._MO_HOLD -> whenFree("hold " + moduleName, () -> control.hold(moduleName));
             default -> whenFree("resume " + moduleName, () -> control.resume(moduleName));
         };
+    }
+
+    @Override
+    public Value sendMessage(String fromHost, String servantPath, String message, Value argument)
+            throws UnknownServant, Refused {
+        List<String> silent = new ArrayList<>();
+        for (String name : control.deployment().plan().hosts()) {
+            Host host = control.deployment().host(name);
+            if (name.equals(fromHost) || host == null) {
+                continue;
+            }
+            try {
+                return host.answerMessage(servantPath, message, argument);
+            } catch (UnknownServant e) {
+                // not on this host: ask the next
+            } catch (SystemException e) {
+                silent.add(name + " (" + e + ")");
+            }
+        }
+        if (!silent.isEmpty()) {
+            throw new Refused("no host that answers has a servant at " + servantPath + "; these do not answer: "
+                    + String.join(", ", silent));
+        }
+        throw new UnknownServant(servantPath);
     }
 
     /** A change a host's Relation asks: refused at once while another change runs (it may be what started it). */

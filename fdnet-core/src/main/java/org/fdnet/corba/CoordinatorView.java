@@ -6,11 +6,13 @@ import org.fdnet.corba.idl.NetworkDescription;
 import org.fdnet.corba.idl.Outcome;
 import org.fdnet.corba.idl.Refused;
 import org.fdnet.corba.idl.UnknownNode;
+import org.fdnet.corba.idl.UnknownServant;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.NetworkEdit;
 import org.fdnet.runtime.Value;
+import org.fdnet.runtime.servant.MessageRefusedException;
 import org.fdnet.runtime.servant.WholeNetwork;
 import org.omg.CORBA.SystemException;
 import org.slf4j.Logger;
@@ -32,9 +34,26 @@ final class CoordinatorView implements WholeNetwork {
     private static final Logger LOG = LoggerFactory.getLogger(CoordinatorView.class);
 
     private final NetworkCoordinator coordinator;
+    private final String hostName;
 
-    CoordinatorView(NetworkCoordinator coordinator) {
+    /** @param hostName the host whose Relations see the network through this view */
+    CoordinatorView(NetworkCoordinator coordinator, String hostName) {
         this.coordinator = coordinator;
+        this.hostName = hostName;
+    }
+
+    @Override
+    public Value message(String path, String message, Value argument) {
+        try {
+            return ValueCodec.decodeRuntime(coordinator.sendMessage(hostName, path, message, ValueCodec.encode(argument)));
+        } catch (UnknownServant e) {
+            throw new MessageRefusedException("no servant at " + path + " on any host of this network");
+        } catch (Refused e) {
+            throw new MessageRefusedException(e.reason);
+        } catch (SystemException e) {
+            throw new MessageRefusedException("the coordinator of this network does not answer (" + e + "): message "
+                    + message + " to " + path + " not delivered");
+        }
     }
 
     @Override

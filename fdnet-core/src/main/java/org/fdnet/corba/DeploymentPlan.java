@@ -11,6 +11,7 @@ import java.util.Set;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.ConnectionKind;
 import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.ModuleTree;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
@@ -114,11 +115,9 @@ public final class DeploymentPlan {
                 throw new IllegalArgumentException("the network has no module named '" + m + "'");
             }
         }
-        Set<String> loaded = new LinkedHashSet<>();
-        for (ModuleInfo m : network.modules()) {
-            if (m.isMain() || m.loadAtStart() || alsoLoaded.contains(m.name())) {
-                loaded.add(m.name());
-            }
+        Set<String> loaded = ModuleTree.atStart(network);
+        for (String m : alsoLoaded) {
+            loaded = ModuleTree.afterLoad(network, loaded, m);
         }
         Set<String> local = new LinkedHashSet<>();
         localNames.forEach(n -> local.add(n.toLowerCase(Locale.ROOT)));

@@ -19,6 +19,7 @@ import org.fdnet.corba.idl.Refused;
 import org.fdnet.corba.idl.ShareChange;
 import org.fdnet.corba.idl.StandInSpec;
 import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.ModuleTree;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.ChangeListener;
@@ -151,15 +152,11 @@ public final class DistributedControl implements NetworkControl {
         String description = "load " + module;
         DeploymentPlan plan = deployment.plan();
         NetworkInfo def = plan.definition();
-        if (def.module(module) == null) {
-            return ChangeOutcome.failed(description, "the network has no module named '" + module + "'");
+        String refused = ModuleTree.whyNotLoadable(def, plan.loaded(), module);
+        if (refused != null) {
+            return ChangeOutcome.failed(description, refused);
         }
-        if (plan.loaded().contains(module)) {
-            return ChangeOutcome.failed(description, "module " + module + " is already loaded");
-        }
-        Set<String> loaded = new LinkedHashSet<>(plan.loaded());
-        loaded.add(module);
-        return reshape(description, def, loaded);
+        return reshape(description, def, ModuleTree.afterLoad(def, plan.loaded(), module));
     }
 
     @Override
@@ -176,9 +173,7 @@ public final class DistributedControl implements NetworkControl {
         if (!plan.loaded().contains(module)) {
             return ChangeOutcome.failed(description, "module " + module + " is not loaded");
         }
-        Set<String> loaded = new LinkedHashSet<>(plan.loaded());
-        loaded.remove(module);
-        return reshape(description, plan.definition(), loaded);
+        return reshape(description, plan.definition(), ModuleTree.afterUnload(plan.loaded(), module));
     }
 
     @Override

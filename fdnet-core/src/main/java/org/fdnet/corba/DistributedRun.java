@@ -14,6 +14,7 @@ import java.util.concurrent.TimeUnit;
 import org.fdnet.event.EventSink;
 import org.fdnet.event.client.CommitReport;
 import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.ModuleTree;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
@@ -41,8 +42,9 @@ public final class DistributedRun {
     /** Whether a node of a module loaded at start names a host other than this machine. */
     public static boolean spansHosts(NetworkInfo definition) {
         Set<String> local = lowerCase(Placement.localNames());
+        Set<String> atStart = ModuleTree.atStart(definition);
         for (ModuleInfo m : definition.modules()) {
-            if (m.isMain() || m.loadAtStart()) {
+            if (atStart.contains(m.name())) {
                 for (NodeInfo n : m.nodes()) {
                     if (!DeploymentPlan.placeOf(n.host(), "", local).isEmpty()) {
                         return true;

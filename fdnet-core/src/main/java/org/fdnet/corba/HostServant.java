@@ -20,10 +20,13 @@ import org.fdnet.corba.idl.UnknownLink;
 import org.fdnet.corba.idl.UnknownNode;
 import org.fdnet.corba.idl.Value;
 import org.fdnet.corba.idl.ValueBatch;
+import org.fdnet.corba.idl.UnknownServant;
 import org.fdnet.corba.idl.ValueSink;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.servant.MessageRefusedException;
+import org.fdnet.runtime.servant.ServantRegistry;
 import org.omg.CORBA.ORB;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -169,8 +172,24 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     }
 
     @Override
+    public Value answerMessage(String servantPath, String message, Value argument) throws UnknownServant, Refused {
+        ServantRegistry servants = network.servants().orElse(null);
+        if (servants == null || !servants.answersHere(servantPath)) {
+            throw new UnknownServant(servantPath);
+        }
+        try {
+            return ValueCodec.encode(servants.answerHere(servantPath, message, ValueCodec.decodeRuntime(argument)));
+        } catch (MessageRefusedException e) {
+            throw new Refused("host " + hostName + ": " + e.getMessage());
+        } catch (RuntimeException e) {
+            LOG.warn("host {}: servant {} failed on message {}", hostName, servantPath, message, e);
+            throw new Refused("host " + hostName + ": servant " + servantPath + " failed on " + message + ": " + e);
+        }
+    }
+
+    @Override
     public void joinNetwork(NetworkCoordinator coordinator) {
-        network.seeWholeNetwork(new CoordinatorView(coordinator));
+        network.seeWholeNetwork(new CoordinatorView(coordinator, hostName));
         LOG.info("host {}: its Relations' Servants now see the whole network", hostName);
     }
 

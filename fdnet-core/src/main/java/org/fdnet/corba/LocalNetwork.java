@@ -8,6 +8,7 @@ import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.Controller;
 import org.fdnet.runtime.NetworkEdit;
+import org.fdnet.runtime.servant.ServantRegistry;
 import org.fdnet.runtime.servant.WholeNetwork;
 
 /**
@@ -106,6 +107,11 @@ public interface LocalNetwork {
 
     /** From now on this host's Relations' Servants see and reshape {@code whole}; ignored by engines without them. */
     default void seeWholeNetwork(WholeNetwork whole) {
+    }
+
+    /** The engine's servant tree, through which other hosts' Relations message this host's servants; empty without. */
+    default Optional<ServantRegistry> servants() {
+        return Optional.empty();
     }
 
     /**

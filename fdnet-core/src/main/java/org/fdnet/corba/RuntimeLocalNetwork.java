@@ -24,6 +24,7 @@ import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.RuntimeOptions;
 import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.runtime.Value;
+import org.fdnet.runtime.servant.ServantRegistry;
 import org.fdnet.runtime.servant.WholeNetwork;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -91,6 +92,11 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
     @Override
     public Optional<Controller> controller() {
         return Optional.of(controller);
+    }
+
+    @Override
+    public Optional<ServantRegistry> servants() {
+        return Optional.of(runtime.servantRegistry());
     }
 
     public RuntimeNetwork runtime() {

@@ -24,6 +24,22 @@ public final class ModelRules {
         }
     }
 
+    /**
+     * A module's path: names separated by '/', each a valid module name ({@code Arm} or {@code Arm/Hand}); no
+     * module lies inside {@code main}, whose place is the top of the network.
+     */
+    public static void checkModulePath(String path) {
+        if (path == null || path.isBlank()) {
+            throw new EditRefusedException("module name may not be empty");
+        }
+        for (String part : path.split("/", -1)) {
+            checkName("module", part);
+        }
+        if (path.startsWith(ModuleInfo.MAIN + "/")) {
+            throw new EditRefusedException("module '" + path + "': no module lies inside 'main' (put it at the top level)");
+        }
+    }
+
     private static boolean hasControlCharacter(String name) {
         for (int i = 0; i < name.length(); i++) {
             if (Character.isISOControl(name.charAt(i))) {

@@ -35,15 +35,29 @@ public final class ModuleInfo {
         return copy;
     }
 
+    /** The module's path: its own name, below its parents' ({@code Arm/Hand}); a top-level module's is its name. */
     public String name() {
         return name;
+    }
+
+    /** The last part of the path: the name the file gives the module. */
+    public String localName() {
+        return name.substring(name.lastIndexOf('/') + 1);
+    }
+
+    /** The enclosing module's path, or {@code null} for a top-level module (and {@code main}). */
+    public String parentName() {
+        return ModuleTree.parentOf(name);
     }
 
     public boolean isMain() {
         return MAIN.equals(name);
     }
 
-    /** Whether the module is loaded when the network starts; {@code main} always is. */
+    /**
+     * Whether the module is loaded when the network starts; {@code main} always is. For a nested module: whether it
+     * is loaded with its parent (so at start only when its parent is too, see {@link ModuleTree#atStart}).
+     */
     public boolean loadAtStart() {
         return loadAtStart || isMain();
     }

@@ -72,7 +72,8 @@ public final class NetworkInfo {
 
     /**
      * The node a connection in {@code contextModule} means by {@code reference}: {@code Module/Node}
-     * as written; a bare name is looked up in {@code contextModule}, then in {@code main}.
+     * (or {@code A/B/Node}) as written; a bare name is looked up in {@code contextModule}, then in each module
+     * enclosing it, outwards, then in {@code main}.
      *
      * @return the node's full name, or {@code null} when no such node exists
      */
@@ -81,23 +82,18 @@ public final class NetworkInfo {
             NodeRef ref = NodeRef.parse(reference, contextModule);
             return node(ref) != null ? ref : null;
         }
-        ModuleInfo own = modules.get(contextModule);
-        if (own != null && own.hasNode(reference)) {
-            return new NodeRef(contextModule, reference);
+        for (String module = contextModule; module != null; module = ModuleTree.parentOf(module)) {
+            ModuleInfo own = modules.get(module);
+            if (own != null && own.hasNode(reference)) {
+                return new NodeRef(module, reference);
+            }
         }
         return main().hasNode(reference) ? new NodeRef(ModuleInfo.MAIN, reference) : null;
     }
 
     /** The shortest text that {@link #resolve} turns back into {@code ref} from {@code contextModule}. */
     public String referenceText(String contextModule, NodeRef ref) {
-        if (ref.module().equals(contextModule)) {
-            return ref.node();
-        }
-        boolean shadowed = modules.containsKey(contextModule) && modules.get(contextModule).hasNode(ref.node());
-        if (ref.module().equals(ModuleInfo.MAIN) && !shadowed) {
-            return ref.node();
-        }
-        return ref.toString();
+        return ref.equals(resolve(contextModule, ref.node())) ? ref.node() : ref.toString();
     }
 
     /** Every connection, in any module, that has {@code ref} at one of its ends. */
@@ -153,11 +149,9 @@ public final class NetworkInfo {
         changed(NetworkChange.Kind.NETWORK_RENAMED, null, null);
     }
 
+    /** Adds an empty module; {@code moduleName} may be a path ({@code Arm/Hand}) below an existing module. */
     public ModuleInfo addModule(String moduleName, boolean loadAtStart) {
-        ModelRules.checkName("module", moduleName);
-        if (modules.containsKey(moduleName)) {
-            throw new EditRefusedException("the network already has a module named '" + moduleName + "'");
-        }
+        checkNewModule(moduleName);
         ModuleInfo module = new ModuleInfo(moduleName, loadAtStart);
         modules.put(moduleName, module);
         changed(NetworkChange.Kind.MODULE_ADDED, moduleName, null);
@@ -169,10 +163,7 @@ public final class NetworkInfo {
      * module's deletion needs to give back the network exactly as it was.
      */
     public ModuleInfo addModule(String moduleName, boolean loadAtStart, int position) {
-        ModelRules.checkName("module", moduleName);
-        if (modules.containsKey(moduleName)) {
-            throw new EditRefusedException("the network already has a module named '" + moduleName + "'");
-        }
+        checkNewModule(moduleName);
         checkPosition(position, modules.size());
         ModuleInfo module = new ModuleInfo(moduleName, loadAtStart);
         LinkedHashMap<String, ModuleInfo> reordered = new LinkedHashMap<>();
@@ -190,50 +181,80 @@ public final class NetworkInfo {
         return module;
     }
 
-    /** Deletes a module, its nodes, and every connection in any module that touches one of them. */
+    private void checkNewModule(String moduleName) {
+        ModelRules.checkModulePath(moduleName);
+        if (modules.containsKey(moduleName)) {
+            throw new EditRefusedException("the network already has a module named '" + moduleName + "'");
+        }
+        String parent = ModuleTree.parentOf(moduleName);
+        if (parent != null && !modules.containsKey(parent)) {
+            throw new EditRefusedException("module '" + moduleName + "' would lie inside module '" + parent
+                    + "', which the network does not have");
+        }
+    }
+
+    /**
+     * Deletes a module, the modules inside it, their nodes, and every connection in any module that touches one of
+     * them.
+     */
     public void deleteModule(String moduleName) {
         ModuleInfo doomed = requireModule(moduleName);
         if (doomed.isMain()) {
             throw new EditRefusedException("module 'main' holds the network's core and cannot be deleted");
         }
-        modules.remove(moduleName);
+        modules.keySet().removeIf(m -> ModuleTree.within(m, moduleName));
         for (ModuleInfo m : modules.values()) {
-            m.mutableConnections().removeIf(c -> c.data().module().equals(moduleName)
-                    || c.relation().module().equals(moduleName));
+            m.mutableConnections().removeIf(c -> ModuleTree.within(c.data().module(), moduleName)
+                    || ModuleTree.within(c.relation().module(), moduleName));
         }
         changed(NetworkChange.Kind.MODULE_DELETED, moduleName, null);
     }
 
-    /** Renames a module; connections anywhere that name its nodes follow. */
+    /**
+     * Renames a module; the modules inside it and connections anywhere that name their nodes follow. A nested
+     * module's new name is a path with the same parent ({@code Arm/Hand} → {@code Arm/Grip}) or a plain name, which
+     * keeps the parent: renaming does not move a module.
+     */
     public void renameModule(String oldName, String newName) {
         ModuleInfo module = requireModule(oldName);
         if (module.isMain()) {
             throw new EditRefusedException("module 'main' cannot be renamed");
         }
-        ModelRules.checkName("module", newName);
+        String parent = ModuleTree.parentOf(oldName);
+        if (parent != null && newName != null && newName.indexOf('/') < 0) {
+            newName = parent + "/" + newName;
+        }
+        ModelRules.checkModulePath(newName);
         if (oldName.equals(newName)) {
             return;
+        }
+        if (!Objects.equals(parent, ModuleTree.parentOf(newName))) {
+            throw new EditRefusedException("cannot rename module '" + oldName + "' to '" + newName
+                    + "': renaming keeps a module where it is");
         }
         if (modules.containsKey(newName)) {
             throw new EditRefusedException("cannot rename module '" + oldName + "': the network already has a module named '" + newName + "'");
         }
         LinkedHashMap<String, ModuleInfo> reordered = new LinkedHashMap<>();
         for (ModuleInfo m : modules.values()) {
-            ModuleInfo kept = m == module ? m.with(newName, m.loadAtStart()) : m;
+            ModuleInfo kept = ModuleTree.within(m.name(), oldName)
+                    ? m.with(newName + m.name().substring(oldName.length()), m.loadAtStart()) : m;
             reordered.put(kept.name(), kept);
         }
         modules.clear();
         modules.putAll(reordered);
+        String renamed = newName;
         for (ModuleInfo m : modules.values()) {
             m.mutableConnections().replaceAll(c -> new ConnectionInfo(c.kind(), c.name(),
-                    moved(c.data(), oldName, newName), moved(c.relation(), oldName, newName),
+                    moved(c.data(), oldName, renamed), moved(c.relation(), oldName, renamed),
                     c.exists(), c.dataInline(), c.relationInline()));
         }
-        changed(NetworkChange.Kind.MODULE_RENAMED, newName, oldName);
+        changed(NetworkChange.Kind.MODULE_RENAMED, renamed, oldName);
     }
 
     private static NodeRef moved(NodeRef ref, String oldModule, String newModule) {
-        return ref.module().equals(oldModule) ? new NodeRef(newModule, ref.node()) : ref;
+        return ModuleTree.within(ref.module(), oldModule)
+                ? new NodeRef(newModule + ref.module().substring(oldModule.length()), ref.node()) : ref;
     }
 
     public void setLoadAtStart(String moduleName, boolean loadAtStart) {

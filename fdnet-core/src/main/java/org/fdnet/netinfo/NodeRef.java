@@ -3,8 +3,9 @@ package org.fdnet.netinfo;
 import java.util.Objects;
 
 /**
- * A fully qualified node name: module and node. Written {@code Module/Node} in files and messages.
- * Names never contain '/', so the form is unambiguous.
+ * A fully qualified node name: module and node. Written {@code Module/Node} in files and messages; a node of a
+ * nested module is written with the module's path, {@code Arm/Hand/Node}. Node and module names never contain
+ * '/', so the last '/' separates the module's path from the node's name.
  */
 public record NodeRef(String module, String node) implements Comparable<NodeRef> {
     public NodeRef {
@@ -12,9 +13,9 @@ public record NodeRef(String module, String node) implements Comparable<NodeRef>
         Objects.requireNonNull(node, "node");
     }
 
-    /** Parses {@code Module/Node}; a bare name is a node of {@code defaultModule}. */
+    /** Parses {@code Module/Node} (or {@code A/B/Node}); a bare name is a node of {@code defaultModule}. */
     public static NodeRef parse(String text, String defaultModule) {
-        int slash = text.indexOf('/');
+        int slash = text.lastIndexOf('/');
         if (slash < 0) {
             return new NodeRef(defaultModule, text);
         }

@@ -1,9 +1,13 @@
 package org.fdnet.runtime;
 
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.Collections;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 import org.fdnet.event.NetworkCommand;
+import org.fdnet.netinfo.ModuleTree;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
@@ -36,16 +40,14 @@ final class NetworkController implements Controller {
     public ChangeOutcome load(String module) {
         String what = "load module " + module;
         Set<String> loaded = network.loaded();
-        if (network.readDefinition(d -> d.module(module)) == null) {
-            return failed(what, "the network has no module named '" + module + "'");
+        String refused = network.readDefinition(d -> ModuleTree.whyNotLoadable(d, loaded, module));
+        if (refused != null) {
+            return failed(what, refused);
         }
-        if (loaded.contains(module)) {
-            return failed(what, "module '" + module + "' is already loaded");
-        }
+        Set<String> added = network.readDefinition(d -> ModuleTree.loadedWith(d, module));
         Set<String> next = new LinkedHashSet<>(loaded);
-        next.add(module);
-        return network.change(what, source, null, next, null, Set.of(),
-                List.of(new RuntimeNetwork.NetworkCommandDraft(NetworkCommand.LOAD, module)));
+        next.addAll(added);
+        return network.change(what, source, null, next, null, Set.of(), commands(NetworkCommand.LOAD, added));
     }
 
     @Override
@@ -58,10 +60,16 @@ final class NetworkController implements Controller {
         if (!loaded.contains(module)) {
             return failed(what, "module '" + module + "' is not loaded");
         }
-        Set<String> next = new LinkedHashSet<>(loaded);
-        next.remove(module);
-        return network.change(what, source, null, next, null, Set.of(),
-                List.of(new RuntimeNetwork.NetworkCommandDraft(NetworkCommand.UNLOAD, module)));
+        Set<String> next = ModuleTree.afterUnload(loaded, module);
+        List<String> removed = new ArrayList<>(loaded);
+        removed.removeAll(next);
+        Collections.reverse(removed);
+        return network.change(what, source, null, next, null, Set.of(), commands(NetworkCommand.UNLOAD, removed));
+    }
+
+    /** One command per module, in the given order (a nested module's load or unload is logged as its own). */
+    private static List<RuntimeNetwork.NetworkCommandDraft> commands(NetworkCommand command, Collection<String> modules) {
+        return modules.stream().map(m -> new RuntimeNetwork.NetworkCommandDraft(command, m)).toList();
     }
 
     @Override

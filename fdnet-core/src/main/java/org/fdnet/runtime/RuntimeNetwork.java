@@ -21,11 +21,13 @@ import org.fdnet.event.NetworkCommand;
 import org.fdnet.netinfo.ConnectionKind;
 import org.fdnet.netinfo.EditRefusedException;
 import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.ModuleTree;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.loading.NodeClassResolver;
+import org.fdnet.runtime.servant.ServantRegistry;
 import org.fdnet.runtime.servant.Servants;
 import org.fdnet.runtime.servant.WholeNetwork;
 import org.slf4j.Logger;
@@ -71,6 +73,7 @@ public final class RuntimeNetwork implements AutoCloseable {
     private volatile List<RemoteLink> remoteLinks = List.of();
     private volatile boolean closed;
     private volatile WholeNetwork wholeNetwork;
+    private final ServantRegistry servantRegistry = new ServantRegistry(() -> wholeNetwork);
 
     private RuntimeNetwork(NetworkInfo definition, RuntimeOptions options) {
         options.seal();
@@ -99,19 +102,15 @@ public final class RuntimeNetwork implements AutoCloseable {
     }
 
     /**
-     * Starts {@code definition} (copied): modules marked {@code loadatstart} are loaded.
+     * Starts {@code definition} (copied): modules marked {@code loadatstart} are loaded (nested ones when their parent
+     * is, {@link ModuleTree#atStart}).
      *
      * @throws RuntimeStartException listing every node that cannot be made; nothing keeps running
      */
     public static RuntimeNetwork start(NetworkInfo definition, RuntimeOptions options) throws RuntimeStartException {
         RuntimeNetwork network = new RuntimeNetwork(definition, options);
         network.flow.servants(network::servantsOf);
-        Set<String> atStart = new LinkedHashSet<>();
-        for (ModuleInfo m : definition.modules()) {
-            if (m.loadAtStart()) {
-                atStart.add(m.name());
-            }
-        }
+        Set<String> atStart = ModuleTree.atStart(definition);
         NetworkInfo copy = definition.copy();
         List<NetworkCommandDraft> loads = atStart.stream()
                 .map(m -> new NetworkCommandDraft(NetworkCommand.LOAD, m)).toList();
@@ -151,7 +150,13 @@ public final class RuntimeNetwork implements AutoCloseable {
     }
 
     private Servants servantsOf(RelationNode node) {
-        return new Servants(this, node.ref, node.id, wholeNetwork);
+        return new Servants(this, node.ref, node.id, wholeNetwork,
+                () -> node.alive && node.status != RelationStatus.FAILED && relations.get(node.ref) == node);
+    }
+
+    /** This engine's servant tree, servant classes and messages (thesis Appendix 2). */
+    public ServantRegistry servantRegistry() {
+        return servantRegistry;
     }
 
     /**
@@ -682,6 +687,7 @@ public final class RuntimeNetwork implements AutoCloseable {
             timer.shutdownNow();
         }
         scheduler.close();
+        servantRegistry.close();
         for (RelationNode r : relations.values()) {
             r.alive = false;
             if (r.status != RelationStatus.FAILED) {

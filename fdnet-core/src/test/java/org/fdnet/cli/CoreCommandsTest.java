@@ -88,4 +88,12 @@ class CoreCommandsTest {
     void theExampleNetworksShouldBeInCanonicalForm() {
         assertThat(fdnet("fmt", "--check", "../networks/arms.fdn")).isZero();
     }
+
+    @Test
+    void infoShouldListNestedModulesByPathWithWhenEachLoads() {
+        assertThat(fdnet("info", "../networks/nested-arm.fdn")).isZero();
+        assertThat(cli.output()).containsPattern("Arm/Hand\\s+start")
+                .containsPattern("Arm/Hand/Fingers\\s+later").contains("5 modules");
+        assertThat(fdnet("validate", "../networks/nested-arm.fdn", "../networks/nested-arm.fdg")).isZero();
+    }
 }

@@ -66,6 +66,22 @@ class DeploymentPlanTest {
     }
 
     @Test
+    void shouldPlanNestedModulesAsTheirParentsLoadThem() {
+        NetworkInfo n = twoRobots();
+        n.addModule("Search", false);
+        n.addModule("Search/Grid", true);
+        n.addModule("Search/Grid/Fine", false);
+        n.addNode("Search/Grid", data("cells", "crawler"));
+        n.addNode("Search/Grid/Fine", data("subcells", "crawler"));
+
+        assertThat(DeploymentPlan.of(n, "run-1", Set.of()).loaded()).doesNotContain("Search", "Search/Grid");
+        assertThat(DeploymentPlan.of(n, "run-1", Set.of(), Set.of("Search")).loaded())
+                .contains("Search", "Search/Grid").doesNotContain("Search/Grid/Fine");
+        assertThat(DeploymentPlan.of(n, "run-1", Set.of(), Set.of("Search")).shareOf("crawler").nodes())
+                .extracting(p -> p.ref().toString()).contains("Search/Grid/cells").doesNotContain("Search/Grid/Fine/subcells");
+    }
+
+    @Test
     void shouldTreatThisMachinesNamesAsLocal() {
         assertThat(DeploymentPlan.placeOf("Robot-PC", "run-1", Set.of("robot-pc"))).isEqualTo("run-1");
         assertThat(DeploymentPlan.placeOf("127.0.0.1", "run-1", Set.of())).isEqualTo("run-1");

@@ -2,6 +2,9 @@ package org.fdnet.corba;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.HashSet;
 import java.util.List;
@@ -16,6 +19,7 @@ import org.fdnet.netinfo.NodeRef;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Live changes of {@code networks/two-robots.fdn} while it runs over three processes, typed on {@code fdnet run}'s
@@ -103,6 +107,33 @@ class LiveChangesAcrossHostsTest {
             assertThat(System.currentTimeMillis()).as("Map changes on the flyer").isLessThan(deadline);
             Thread.sleep(50);
         }
+    }
+
+    /** networks/nested-arm.fdn with module Arm and everything in it on host "flyer". */
+    @Test
+    void shouldLoadAndUnloadNestedModulesOnTheirHostAsOneHostDoes(@TempDir Path dir) throws Exception {
+        String text = Files.readString(Path.of("../networks/nested-arm.fdn"), StandardCharsets.UTF_8);
+        int arm = text.indexOf("<module name=\"Arm\"");
+        Path nested = dir.resolve("nested-arm.fdn");
+        Files.writeString(nested, text.substring(0, arm) + text.substring(arm).replace("<host>localhost</host>", "<host>flyer</host>"),
+                StandardCharsets.UTF_8);
+        cluster = CorbaCluster.start();
+        Host flyer = cluster.startHost("flyer");
+        run = FdnetChildProcess.start("run nested-arm", List.of("run", nested.toString(), "--naming", cluster.corbaloc(),
+                "--as", "operator-station", "--for", "120s"), "running on 2 hosts", 60_000);
+        assertThat(flyer.nodes()).contains("Arm/Shoulder", "Arm/Hand/Grip").doesNotContain("Arm/Hand/Fingers/Tip");
+        run.send("load Arm/Hand/Fingers");
+        assertThat(awaitLine(l -> l.contains("Arm/Hand/Fingers"))).isEqualTo("ok: load Arm/Hand/Fingers on flyer");
+        assertThat(flyer.nodes()).contains("Arm/Hand/Fingers/Tip");
+        run.send("unload Arm");
+        assertThat(awaitLine(l -> l.contains("unload Arm"))).startsWith("ok: unload Arm");
+        assertThat(flyer.nodes()).noneMatch(n -> n.startsWith("Arm/"));
+        run.send("load Arm/Hand");
+        assertThat(awaitLine(l -> l.contains("load Arm/Hand"))).isEqualTo("refused: load Arm/Hand: module 'Arm/Hand' is "
+                + "inside module 'Arm', which is not loaded: load 'Arm' first");
+        run.send("load Arm");
+        assertThat(awaitLine(l -> l.startsWith("ok: load Arm "))).isEqualTo("ok: load Arm on flyer");
+        assertThat(flyer.nodes()).contains("Arm/Hand/Grip").doesNotContain("Arm/Hand/Fingers/Tip");
     }
 
     private String awaitLine(Predicate<String> line) throws InterruptedException {

@@ -57,7 +57,9 @@ class NetworkInfoTest {
     @Test
     void shouldRefuseDuplicateAndMalformedModuleNames() {
         assertRefusedAndUntouched(() -> network.addModule("Walk", false), "already has a module named 'Walk'");
-        assertRefusedAndUntouched(() -> network.addModule("a/b", false), "may not contain '/'");
+        // a '/' nests a module: inside a module that exists, or not at all
+        assertRefusedAndUntouched(() -> network.addModule("a/b", false), "inside module 'a', which the network does not have");
+        assertRefusedAndUntouched(() -> network.addModule("Walk/", false), "may not be empty");
         assertRefusedAndUntouched(() -> network.addModule(" ", false), "may not be empty");
         assertRefusedAndUntouched(() -> network.addModule("tab\there", false), "control characters");
     }

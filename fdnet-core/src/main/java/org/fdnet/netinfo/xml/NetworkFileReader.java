@@ -30,7 +30,8 @@ import org.fdnet.netinfo.xml.binding.WriteElement;
 
 /**
  * Turns a .fdn file into a {@link NetworkInfo}: first the DTD (by {@link GuardedXmlReader}), then the
- * rules a DTD cannot say, each reported at its line: unique module names, unique node names per
+ * rules a DTD cannot say, each reported at its line: unique module names (a nested module is named by its path,
+ * {@code Arm/Hand}), unique node names per
  * module, typed parameter values, and connections whose names resolve (own module, then main) to one
  * Data and one Relation. The model's own edit rules do the checking, so a file and an edit can never
  * disagree on what is valid.
@@ -68,20 +69,31 @@ final class NetworkFileReader {
     private Map<String, ModuleBody> declareModules(NetworkInfo network, CnetElement root) {
         Map<String, ModuleBody> bodies = new LinkedHashMap<>();
         bodies.put(ModuleInfo.MAIN, root);
-        for (ModuleElement m : root.modules) {
+        declareModules(network, null, root.modules, bodies);
+        return bodies;
+    }
+
+    /** Declares {@code elements} inside module {@code parent} ({@code null}: the top level), then what each holds. */
+    private void declareModules(NetworkInfo network, String parent, List<ModuleElement> elements, Map<String, ModuleBody> bodies) {
+        for (ModuleElement m : elements) {
             String name = m.name.strip();
             if (ModuleInfo.MAIN.equals(name)) {
                 problem(m, "module name 'main' is reserved: the top-level nodes and connections form module main");
                 continue;
             }
+            if (name.indexOf('/') >= 0) {
+                problem(m, "module name '" + name + "' may not contain '/': nest a module element inside another instead");
+                continue;
+            }
+            String path = parent == null ? name : parent + "/" + name;
             try {
-                network.addModule(name, "yes".equals(m.loadatstart));
-                bodies.put(name, m);
+                network.addModule(path, "yes".equals(m.loadatstart));
+                bodies.put(path, m);
+                declareModules(network, path, m.modules, bodies);
             } catch (EditRefusedException e) {
                 problem(m, e.getMessage());
             }
         }
-        return bodies;
     }
 
     private void declareNodes(NetworkInfo network, String module, ModuleBody body) {
@@ -174,6 +186,8 @@ final class NetworkFileReader {
                 where = describeQualified(network, NodeRef.parse(text, module));
             } else if (ModuleInfo.MAIN.equals(module)) {
                 where = "module 'main' has no node named '" + text + "'";
+            } else if (module.indexOf('/') >= 0) {
+                where = "neither module '" + module + "', the modules enclosing it, nor module 'main' has a node named '" + text + "'";
             } else {
                 where = "neither module '" + module + "' nor module 'main' has a node named '" + text + "'";
             }

@@ -5,8 +5,10 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.ConnectionKind;
@@ -31,7 +33,7 @@ import org.fdnet.netinfo.xml.binding.WriteElement;
 
 /**
  * Writes a {@link NetworkInfo} as a .fdn file in canonical form: UTF-8, a DOCTYPE, four-space
- * indentation, modules, nodes and connections in model order (which is file order for a loaded
+ * indentation, modules (a nested module inside its parent's element), nodes and connections in model order (which is file order for a loaded
  * network), each module's connections in one {@code connection} element, references in their
  * shortest unambiguous form. Nodes a file declared inside a {@code read} are written back there,
  * as long as that keeps the node order; otherwise they become ordinary structures.
@@ -60,15 +62,18 @@ final class NetworkFileWriter {
     private CnetElement toElement() {
         CnetElement root = new CnetElement();
         root.name = network.name();
+        Map<String, ModuleElement> elements = new HashMap<>();
         for (ModuleInfo module : network.modules()) {
             if (module.isMain()) {
                 fill(root, module);
             } else {
                 ModuleElement element = new ModuleElement();
-                element.name = module.name();
+                element.name = module.localName();
                 element.loadatstart = module.loadAtStart() ? "yes" : "no";
                 fill(element, module);
-                root.modules.add(element);
+                String parent = module.parentName();
+                (parent == null ? root.modules : elements.get(parent).modules).add(element);
+                elements.put(module.name(), element);
             }
         }
         return root;

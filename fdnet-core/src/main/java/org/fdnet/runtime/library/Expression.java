@@ -16,9 +16,14 @@ public class Expression extends Relation {
 
     @Override
     protected void init(NodeParameters parameters) {
+        compiled = compile(parameters);
+    }
+
+    /** The node's required parameter {@code expression}, compiled; a ParameterException names what does not parse. */
+    static ExpressionParser.Node compile(NodeParameters parameters) {
         String text = parameters.requireString("expression");
         try {
-            compiled = ExpressionParser.parse(text);
+            return ExpressionParser.parse(text);
         } catch (IllegalArgumentException e) {
             throw parameters.invalid("expression", "does not parse: " + e.getMessage());
         }

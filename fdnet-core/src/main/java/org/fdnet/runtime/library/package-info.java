@@ -8,6 +8,7 @@
  *   shaping     Expression, MovingAverage, LowPass, RateLimiter, Threshold
  *   deciding    Integration (candidates × judgment, thesis Figure 5), Selector, PdController
  *   watching    Print;  AutoFilter (self-organization through the Servants)
+ *   messages    ExpressionServant (offers a servant), ServantAsker (messages one; replies become values)
  * </pre>
  */
 package org.fdnet.runtime.library;

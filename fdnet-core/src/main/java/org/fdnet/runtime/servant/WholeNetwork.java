@@ -44,4 +44,13 @@ public interface WholeNetwork {
     ChangeOutcome hold(String module);
 
     ChangeOutcome resume(String module);
+
+    /**
+     * The answer of the servant at {@code path} on whichever host has one (asked through the network's coordinator).
+     *
+     * @throws MessageRefusedException when no host has a servant there, it refused, or a host does not answer
+     */
+    default Value message(String path, String message, Value argument) {
+        throw new MessageRefusedException("no servant at " + path + ": this view of the network reaches no other host's servants");
+    }
 }

@@ -22,5 +22,14 @@
  *   Visitor / Reflect / Iterators ─▶ snapshot (definition + loaded modules + node → host) ─▶ descriptions
  *   Paste / load / unload / hold / resume ─▶ WholeNetwork ─▶ coordinator ─▶ every host it touches (or refused)
  * </pre>
+ *
+ * <p>The servant system proper ({@link org.fdnet.runtime.servant.ServantRegistry}, one per engine): servant classes
+ * and their {@code name:N} instances, the tree of {@link org.fdnet.runtime.servant.ServantNode}s from the root, and
+ * typed messages between Relations answered through a {@link org.fdnet.runtime.servant.ReturnListener}:
+ * <pre>
+ *   Relation A ─sendMessage(path, message, Value)─▶ messaging thread ─▶ tree here: MessageServant.answer
+ *                                                                   └▶ else WholeNetwork.message ─▶ other hosts
+ *   ReturnListener.returned(reply) / refused(reason) ◀───────────────────────────────────────────────┘
+ * </pre>
  */
 package org.fdnet.runtime.servant;

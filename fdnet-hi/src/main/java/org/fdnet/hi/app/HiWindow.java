@@ -192,6 +192,7 @@ public final class HiWindow extends JFrame {
         graph.add(top, BorderLayout.NORTH);
         graph.add(canvas, BorderLayout.CENTER);
         JPanel sidePanel = new JPanel(new BorderLayout());
+        sidePanel.add(new ModuleTreePanel(network.scene()), BorderLayout.NORTH);
         sidePanel.add(info, BorderLayout.CENTER);
         liveSlot.removeAll();
         sidePanel.add(liveSlot, BorderLayout.SOUTH);

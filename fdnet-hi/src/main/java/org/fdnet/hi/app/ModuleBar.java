@@ -35,14 +35,11 @@ public final class ModuleBar extends JPanel implements SceneListener {
     }
 
     private void rebuild() {
-        StringBuilder key = new StringBuilder();
-        for (ModuleInfo m : scene.network().modules()) {
-            key.append(m.name()).append(scene.visible(m.name())).append(scene.moduleColour(m.name())).append('|');
-        }
-        if (key.toString().equals(shown)) {
+        String key = scene.modulesKey();
+        if (key.equals(shown)) {
             return;
         }
-        shown = key.toString();
+        shown = key;
         removeAll();
         add(new JLabel("Modules:"));
         for (ModuleInfo m : scene.network().modules()) {

@@ -40,7 +40,8 @@ final class ViewMenu {
         menu.add(add(MenuItems.action("Node Colour…", null, () -> chooseNodeColour(window))));
         menu.add(add(MenuItems.action("Node Size…", null, () -> chooseNodeSize(window))));
         menu.add(add(MenuItems.action("Module Colour…", null, this::chooseModuleColour)));
-        menu.add(add(MenuItems.action("Show All Modules", null, this::showAll)));
+        menu.add(add(MenuItems.action("Show All Modules", null, () -> showAll(true))));
+        menu.add(add(MenuItems.action("Hide All Modules (Display None)", null, () -> showAll(false))));
     }
 
     JMenu menu() {
@@ -128,12 +129,7 @@ final class ViewMenu {
         }
     }
 
-    private void showAll() {
-        GraphScene scene = window.current().scene();
-        for (ModuleInfo m : scene.network().modules()) {
-            if (!scene.visible(m.name())) {
-                scene.setModuleVisible(m.name(), true);
-            }
-        }
+    private void showAll(boolean show) {
+        window.current().scene().setAllModulesVisible(show);
     }
 }

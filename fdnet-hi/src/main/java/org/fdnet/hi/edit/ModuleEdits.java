@@ -5,6 +5,7 @@ import java.util.List;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.EditRefusedException;
 import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.ModuleTree;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 
@@ -22,8 +23,25 @@ final class ModuleEdits {
         };
     }
 
-    /** Inverse: the module back at its place with its nodes, its connections, and other modules' connections to it. */
+    /**
+     * Deletes a module with the modules inside it (the innermost first). Inverse: each back at its place, outermost
+     * first, with its nodes, its connections, and other modules' connections to it.
+     */
     static ReversibleEdit delete(String module) {
+        return target -> {
+            List<String> subtree = ModuleTree.subtree(target.network(), module);
+            if (subtree.isEmpty()) {
+                throw new EditRefusedException("the network has no module named '" + module + "'");
+            }
+            List<ReversibleEdit> restore = new ArrayList<>();
+            for (int i = subtree.size() - 1; i >= 0; i--) {
+                restore.add(0, deleteOne(subtree.get(i)).applyTo(target));
+            }
+            return CompositeEdit.of(restore);
+        };
+    }
+
+    private static ReversibleEdit deleteOne(String module) {
         return target -> {
             NetworkInfo network = target.network();
             ModuleInfo doomed = network.module(module);
@@ -53,11 +71,17 @@ final class ModuleEdits {
         };
     }
 
+    /** Renames a module; {@code to} is its new name or path (a nested module stays inside its parent). */
     static ReversibleEdit rename(String from, String to) {
         return target -> {
-            target.network().renameModule(from, to);
-            target.moduleRenamed(from, to);
-            return rename(to, from);
+            String parent = ModuleTree.parentOf(from);
+            String path = parent == null || to.indexOf('/') >= 0 ? to : parent + "/" + to;
+            List<String> subtree = ModuleTree.subtree(target.network(), from);
+            target.network().renameModule(from, path);
+            for (String old : subtree) {
+                target.moduleRenamed(old, path + old.substring(from.length()));
+            }
+            return rename(path, from);
         };
     }
 

@@ -20,6 +20,7 @@ import org.fdnet.layout.NetworkLayout;
 import org.fdnet.layout.NodeLayout;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.ModuleTree;
 import org.fdnet.netinfo.NetworkChange;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
@@ -231,6 +232,33 @@ public final class GraphScene {
             selected.removeIf(r -> r.module().equals(module));
         }
         viewChanged();
+    }
+
+    /** A text that changes exactly when the modules, their visibility or their colours do: for panels that list them. */
+    public String modulesKey() {
+        StringBuilder key = new StringBuilder();
+        for (ModuleInfo m : network().modules()) {
+            key.append(m.name()).append(visible(m.name())).append(moduleColour(m.name())).append('|');
+        }
+        return key.toString();
+    }
+
+    /** Shows or hides {@code module} and every module nested inside it. */
+    public void setModuleSubtreeVisible(String module, boolean visible) {
+        for (String m : ModuleTree.subtree(network(), module)) {
+            if (visible(m) != visible) {
+                setModuleVisible(m, visible);
+            }
+        }
+    }
+
+    /** Display all ({@code true}) or Display none ({@code false}). */
+    public void setAllModulesVisible(boolean visible) {
+        for (ModuleInfo m : network().modules()) {
+            if (visible(m.name()) != visible) {
+                setModuleVisible(m.name(), visible);
+            }
+        }
     }
 
     public void setModuleColour(String module, Color colour) {

@@ -10,7 +10,7 @@ import org.fdnet.runtime.Value;
 
 /**
  * A sensor of RoQ in the network: parameter {@code channel} (required) names which — {@code joint_angles},
- * {@code joint_velocities}, {@code joint_torques}, {@code attitude}, {@code foot_forces}, {@code foot_contacts},
+ * {@code joint_velocities}, {@code joint_torques}, {@code attitude}, {@code imu_gyro}, {@code imu_accel}, {@code foot_forces}, {@code foot_contacts},
  * {@code wheel_speeds}, {@code ir_range}, {@code ultrasonic_range}, {@code body_position},
  * {@code centre_of_mass}, {@code depth_image} (see {@link SensorChannel}); {@code every} (default 1) feeds one
  * simulator snapshot in that many. The {@link org.fdnet.roq.bridge.SimBridge} pushes the values.

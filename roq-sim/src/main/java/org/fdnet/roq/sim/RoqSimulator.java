@@ -34,6 +34,7 @@ public final class RoqSimulator implements AutoCloseable {
     private final SimOptions options;
     private final ByteBuffer block;
     private final Object commandLock = new Object();
+    private final StimulusTable stimuli;
     private long handle;
     private volatile long lastReadTick;
 
@@ -43,6 +44,7 @@ public final class RoqSimulator implements AutoCloseable {
         this.options = options;
         this.block = block;
         this.handle = handle;
+        this.stimuli = new StimulusTable(block, course.fragileCells().size());
     }
 
     /** Opens {@code course} in {@code mode} with the default options ({@link SimOptions#of}). */
@@ -78,6 +80,9 @@ public final class RoqSimulator implements AutoCloseable {
             deleteQuietly(file);
         }
         RoqSimulator sim = new RoqSimulator(course, terrain, options, block, handle);
+        for (Stimulus x : course.stimuli()) {
+            sim.stimulate(x);
+        }
         if (options.mode() == SimMode.REAL_TIME) {
             String warnings;
             try {
@@ -192,6 +197,17 @@ public final class RoqSimulator implements AutoCloseable {
             block.putLong(SharedBlockLayout.C_FLAGS, command.wheelsEnabled() ? SharedBlockLayout.FLAG_WHEELS : 0);
             LONGS.setRelease(block, SharedBlockLayout.COMMAND_SEQ, seq + 2);
         }
+    }
+
+    /**
+     * Adds a push or cell break; the loop applies it from its {@link Stimulus#firstTick()} (a push already under way
+     * acts for what is left of it). Stimuli that have ended by the last {@link #read} snapshot are dropped to make
+     * room; at most {@link SharedBlockLayout#MAX_STIMULI} may be pending. No JNI.
+     *
+     * @throws IllegalArgumentException when a {@link CellBreak} names a cell the course lacks, or the table is full
+     */
+    public void stimulate(Stimulus stimulus) {
+        stimuli.add(stimulus, lastReadTick);
     }
 
     /** Copies the loop's statistics into {@code into} (a seqlock read, like {@link #read}). Returns {@code into}. */

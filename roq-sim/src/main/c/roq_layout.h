@@ -6,7 +6,7 @@
 #ifndef ROQ_LAYOUT_H
 #define ROQ_LAYOUT_H
 
-#define ROQ_LAYOUT_VERSION 4
+#define ROQ_LAYOUT_VERSION 5
 #define ROQ_BLOCK_SIZE 16384
 
 #define ROQ_JOINTS 12
@@ -18,6 +18,7 @@
 #define ROQ_STALE_TICKS 100
 #define ROQ_REFLEX_BINS 16
 #define ROQ_MAX_STIMULI 32
+#define ROQ_APPLIED_RING 64
 
 /* header */
 #define L_LAYOUT_VERSION 0
@@ -71,7 +72,14 @@
 #define C_TARGETS 12296
 #define C_WHEEL_SPEED 12392
 #define C_FLAGS 12424
+#define C_SOURCE_TICK 12432 /* the newest snapshot the command was computed from; 0 none, <0 = C_ISSUED_TICK (version 5) */
 #define FLAG_WHEELS 1
+
+/* applied-command ring (under the snapshot sequence): command n (from 1, T_COMMANDS_APPLIED counts them) at slot
+   (n - 1) % ROQ_APPLIED_RING: int64 the tick it was applied at (it first shows in snapshot tick + 1), int64 its
+   source tick (version 5) */
+#define A_RING 14080
+#define A_ENTRY_SIZE 16
 
 /* stimulus table (under the stimulus sequence, written by Java): pushes and cell breaks the tick applies */
 #define X_COUNT 12440
@@ -89,7 +97,7 @@
     T_TICKS, T_OVERRUNS, T_MAX_OVERRUN_NS, T_MAX_LATENCY_NS, T_LATENCY_SAMPLES, T_COMMANDS_APPLIED, T_COMMANDS_NAN, \
     T_COMMANDS_OUT_OF_RANGE, T_COMMANDS_STALE, T_RT_FLAGS, T_MAX_TICK_NS, T_LAST_APPLIED_TICK, \
     T_LAST_APPLIED_BASED_ON, T_HISTOGRAM, T_REFLEX_HISTOGRAM, \
-    C_ISSUED_TICK, C_TARGETS, C_WHEEL_SPEED, C_FLAGS, X_COUNT, X_TABLE, X_ENTRY_SIZE, ROQ_MAX_STIMULI }
+    C_ISSUED_TICK, C_TARGETS, C_WHEEL_SPEED, C_FLAGS, C_SOURCE_TICK, A_RING, A_ENTRY_SIZE, ROQ_APPLIED_RING, X_COUNT, X_TABLE, X_ENTRY_SIZE, ROQ_MAX_STIMULI }
 
 #define RT_SCHED_FIFO 1
 #define RT_MLOCKALL 2

@@ -45,6 +45,7 @@ typedef struct {
     int64_t tick;
     int64_t snapshot_seq;
     int64_t depth_frames;
+    int applied_slot;                  /* the ring slot written this tick, for publish to copy; -1 none */
     int histogram_bin;                 /* the latency bin counted this tick, for publish to copy; -1 none */
     uint64_t noise_state;
 

@@ -50,6 +50,7 @@ static void take_command(roq_sim *s) {
     double targets[ROQ_JOINTS], wheels[ROQ_LEGS];
     int64_t issued = *(volatile int64_t *)BLK_L(b, C_ISSUED_TICK);
     int64_t flags = *(volatile int64_t *)BLK_L(b, C_FLAGS);
+    int64_t source = *(volatile int64_t *)BLK_L(b, C_SOURCE_TICK);
     memcpy(targets, b + C_TARGETS, sizeof targets);
     memcpy(wheels, b + C_WHEEL_SPEED, sizeof wheels);
     __atomic_thread_fence(__ATOMIC_ACQUIRE);
@@ -85,12 +86,19 @@ static void take_command(roq_sim *s) {
         }
         s->wheel_target[i] = v;
     }
-    (*BLK_L(st, T_COMMANDS_APPLIED))++;
-    /* reflex latency: applied now, the command first shows in snapshot tick + 1 */
+    int64_t n = ++(*BLK_L(st, T_COMMANDS_APPLIED));
+    /* reflex latency: applied now, the command first shows in snapshot tick + 1; a command computed from no
+       snapshot (source 0) has none */
+    source = source < 0 ? issued : source;
     *BLK_L(st, T_LAST_APPLIED_TICK) = s->tick;
-    *BLK_L(st, T_LAST_APPLIED_BASED_ON) = issued;
-    int64_t reflex = s->tick + 1 - issued;
-    BLK_I(st, T_REFLEX_HISTOGRAM)[reflex < 0 ? 0 : (reflex >= ROQ_REFLEX_BINS ? ROQ_REFLEX_BINS - 1 : reflex)]++;
+    *BLK_L(st, T_LAST_APPLIED_BASED_ON) = source;
+    s->applied_slot = (int)((n - 1) % ROQ_APPLIED_RING);
+    BLK_L(st, A_RING + A_ENTRY_SIZE * s->applied_slot)[0] = s->tick;
+    BLK_L(st, A_RING + A_ENTRY_SIZE * s->applied_slot)[1] = source;
+    if (source > 0) {
+        int64_t reflex = s->tick + 1 - source;
+        BLK_I(st, T_REFLEX_HISTOGRAM)[reflex < 0 ? 0 : (reflex >= ROQ_REFLEX_BINS ? ROQ_REFLEX_BINS - 1 : reflex)]++;
+    }
 }
 
 /* Takes a new, complete stimulus table from the block (same protocol as the command slot). */
@@ -332,6 +340,11 @@ static void publish(roq_sim *s) {
         s->histogram_bin = -1;
     }
     memcpy(s->block + T_REFLEX_HISTOGRAM, s->stage + T_REFLEX_HISTOGRAM, 4 * ROQ_REFLEX_BINS);
+    if (s->applied_slot >= 0) {
+        memcpy(s->block + A_RING + A_ENTRY_SIZE * s->applied_slot, s->stage + A_RING + A_ENTRY_SIZE * s->applied_slot,
+               A_ENTRY_SIZE);
+        s->applied_slot = -1;
+    }
     s->snapshot_seq += 2;
     __atomic_store_n(seq, s->snapshot_seq, __ATOMIC_RELEASE);
 }
@@ -371,6 +384,7 @@ roq_sim *roq_open(const char *mjcf, const float *heights, int nheights, const do
     }
     s->dma_fd = -1;
     s->histogram_bin = -1;
+    s->applied_slot = -1;
     memcpy(s->p, params, sizeof s->p);
     s->block = block;
     s->stage = calloc(1, ROQ_BLOCK_SIZE);

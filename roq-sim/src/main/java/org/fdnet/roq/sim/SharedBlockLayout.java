@@ -23,7 +23,7 @@ public final class SharedBlockLayout {
     }
 
     /** Layout version; changes whenever an offset does. */
-    public static final int VERSION = 4;
+    public static final int VERSION = 5;
     /** Size of the block, bytes. */
     public static final int BLOCK_SIZE = 16384;
 
@@ -92,6 +92,15 @@ public final class SharedBlockLayout {
     public static final int C_TARGETS = 12296;
     public static final int C_WHEEL_SPEED = 12392;
     public static final int C_FLAGS = 12424;
+    /** The newest snapshot the command was computed from: 0 none, negative = {@link #C_ISSUED_TICK} (version 5). */
+    public static final int C_SOURCE_TICK = 12432;
+    /**
+     * Applied-command ring (under the snapshot sequence): command n (from 1; {@link #T_COMMANDS_APPLIED} counts them)
+     * at slot (n − 1) % {@link #APPLIED_RING}: int64 the tick it was applied at, int64 its source tick.
+     */
+    public static final int A_RING = 14080;
+    public static final int A_ENTRY_SIZE = 16;
+    public static final int APPLIED_RING = 64;
     /** C_FLAGS bit: the wheel speeds are to be driven (else the wheels are braked). */
     public static final long FLAG_WHEELS = 1;
 
@@ -120,7 +129,7 @@ public final class SharedBlockLayout {
         "S_PUSH_FORCE", "S_END", "T_TICKS", "T_OVERRUNS", "T_MAX_OVERRUN_NS", "T_MAX_LATENCY_NS", "T_LATENCY_SAMPLES",
         "T_COMMANDS_APPLIED", "T_COMMANDS_NAN", "T_COMMANDS_OUT_OF_RANGE", "T_COMMANDS_STALE", "T_RT_FLAGS",
         "T_MAX_TICK_NS", "T_LAST_APPLIED_TICK", "T_LAST_APPLIED_BASED_ON", "T_HISTOGRAM", "T_REFLEX_HISTOGRAM",
-        "C_ISSUED_TICK", "C_TARGETS", "C_WHEEL_SPEED", "C_FLAGS", "X_COUNT", "X_TABLE", "X_ENTRY_SIZE", "MAX_STIMULI"};
+        "C_ISSUED_TICK", "C_TARGETS", "C_WHEEL_SPEED", "C_FLAGS", "C_SOURCE_TICK", "A_RING", "A_ENTRY_SIZE", "APPLIED_RING", "X_COUNT", "X_TABLE", "X_ENTRY_SIZE", "MAX_STIMULI"};
     static final int[] OFFSETS = {LAYOUT_VERSION, SNAPSHOT_SEQ, COMMAND_SEQ, STIMULUS_SEQ,
         S_TICK, S_TIME, S_JOINT_ANGLE, S_JOINT_VELOCITY, S_JOINT_TORQUE, S_ROLL, S_PITCH, S_FOOT_FORCE,
         S_IR_RANGE, S_ULTRASONIC_RANGE, S_BODY_POSITION, S_BODY_QUATERNION, S_CENTRE_OF_MASS,
@@ -128,7 +137,7 @@ public final class SharedBlockLayout {
         S_PUSH_FORCE, S_END, T_TICKS, T_OVERRUNS, T_MAX_OVERRUN_NS, T_MAX_LATENCY_NS, T_LATENCY_SAMPLES,
         T_COMMANDS_APPLIED, T_COMMANDS_NAN, T_COMMANDS_OUT_OF_RANGE, T_COMMANDS_STALE, T_RT_FLAGS,
         T_MAX_TICK_NS, T_LAST_APPLIED_TICK, T_LAST_APPLIED_BASED_ON, T_HISTOGRAM, T_REFLEX_HISTOGRAM,
-        C_ISSUED_TICK, C_TARGETS, C_WHEEL_SPEED, C_FLAGS, X_COUNT, X_TABLE, X_ENTRY_SIZE, MAX_STIMULI};
+        C_ISSUED_TICK, C_TARGETS, C_WHEEL_SPEED, C_FLAGS, C_SOURCE_TICK, A_RING, A_ENTRY_SIZE, APPLIED_RING, X_COUNT, X_TABLE, X_ENTRY_SIZE, MAX_STIMULI};
 
     /**
      * The first field whose offset differs between {@link #OFFSETS} and the native side's {@code nativeOffsets}, as

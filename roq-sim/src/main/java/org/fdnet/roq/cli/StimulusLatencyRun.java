@@ -36,7 +36,7 @@ import org.fdnet.runtime.Value;
  */
 final class StimulusLatencyRun {
     /** A push that tips the crawl past the reflex's thresholds without felling it (TiltReflexTest). */
-    static final double PUSH_NEWTONS = 200;
+    static final double PUSH_NEWTONS = 300;
     static final double PUSH_SECONDS = 0.1;
     private static final double[] CORNER_DEGREES = {45, -45, 135, 225}; // fl, fr, hl, hr
 

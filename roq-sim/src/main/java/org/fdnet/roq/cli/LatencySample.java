@@ -15,6 +15,13 @@ final class LatencySample {
         ticks[count++] = latencyTicks;
     }
 
+    /** Adds every sample of this one to {@code other}. */
+    void addAllTo(LatencySample other) {
+        for (int i = 0; i < count; i++) {
+            other.add(ticks[i]);
+        }
+    }
+
     int count() {
         return count;
     }

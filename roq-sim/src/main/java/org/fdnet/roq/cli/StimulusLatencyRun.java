@@ -12,8 +12,11 @@ import org.fdnet.netinfo.NodeRef;
 import org.fdnet.roq.bridge.SimBridge;
 import org.fdnet.roq.node.RoqSensor;
 import org.fdnet.roq.node.TiltReflex;
+import org.fdnet.roq.sim.CellBreak;
 import org.fdnet.roq.sim.Course;
+import org.fdnet.roq.sim.FragileCell;
 import org.fdnet.roq.sim.Push;
+import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.roq.sim.SimMode;
@@ -39,8 +42,21 @@ final class StimulusLatencyRun {
     static final double PUSH_NEWTONS = 300;
     static final double PUSH_SECONDS = 0.1;
     private static final double[] CORNER_DEGREES = {45, -45, 135, 225}; // fl, fr, hl, hr
+    private static final int FRONT_LEFT = 0;
+    private static final int HIND_RIGHT = 3;
 
     record Outcome(int stimuli, int shown, LatencySample latencies, boolean fell) {
+    }
+
+    /** Which stimulus a run applies. */
+    enum Kind {
+        /** Pushes on the body during leg swings, one run of the given length. */
+        PUSH,
+        /**
+         * Sole-force drops: short runs on {@link #cellsUnderTheFeet}, each breaking the cell under the front-left
+         * foot while the hind-right leg (its diagonal partner) is in the air.
+         */
+        CELL_BREAK
     }
 
     private final Course course;
@@ -72,7 +88,36 @@ final class StimulusLatencyRun {
         reflexModule = reflex.module();
     }
 
-    Outcome run() throws Exception {
+    Outcome run(Kind kind) throws Exception {
+        if (kind == Kind.PUSH) {
+            return run(course, Kind.PUSH, seconds);
+        }
+        Outcome sum = new Outcome(0, 0, new LatencySample(), false);
+        Course cells = cellsUnderTheFeet(course);
+        for (int i = 0; i < CELL_BREAK_RUNS; i++) {
+            Outcome o = run(cells, Kind.CELL_BREAK, 4);
+            o.latencies().addAllTo(sum.latencies());
+            sum = new Outcome(sum.stimuli() + o.stimuli(), sum.shown() + o.shown(), sum.latencies(), sum.fell() || o.fell());
+        }
+        return sum;
+    }
+
+    /** Sole-force-drop runs per measurement. */
+    static final int CELL_BREAK_RUNS = 8;
+
+    /** {@code c} with a strong fragile cell (1000 N, 3 cm) under each standing foot, front-left's first. */
+    static Course cellsUnderTheFeet(Course c) {
+        List<FragileCell> cells = new ArrayList<>();
+        double[] foot = new double[3];
+        for (int leg = 0; leg < RoqGeometry.LEGS; leg++) {
+            RoqGeometry.footInBody(leg, RoqGeometry.STANDING_POSE[0], RoqGeometry.STANDING_POSE[1],
+                    RoqGeometry.STANDING_POSE[2], foot);
+            cells.add(new FragileCell(c.startX() + foot[0], c.startY() + foot[1], 0.12, 0.12, 0.03, 1000));
+        }
+        return c.withFragileCells(cells);
+    }
+
+    private Outcome run(Course on, Kind kind, int runSeconds) throws Exception {
         RuntimeOptions options = RuntimeOptions.defaults();
         if (client != null) {
             options = options.sink(client);
@@ -81,7 +126,7 @@ final class StimulusLatencyRun {
         int stimuli = 0;
         int shown = 0;
         boolean fell = false;
-        try (RoqSimulator sim = RoqSimulator.open(course, SimMode.REAL_TIME);
+        try (RoqSimulator sim = RoqSimulator.open(on, SimMode.REAL_TIME);
              RuntimeNetwork net = RuntimeNetwork.start(definition, options);
              SimBridge bridge = SimBridge.realTime(net, sim)) {
             if (!reflexLoaded && !net.controller().unload(reflexModule).executed()) {
@@ -97,18 +142,22 @@ final class StimulusLatencyRun {
             NodeRef phase = dataNamed(net, "gait phase");
             NodeRef fallen = dataNamed(net, "fallen");
             SensorSnapshot s = new SensorSnapshot();
-            long end = System.nanoTime() + seconds * 1_000_000_000L;
-            Thread.sleep(1500); // stand up and start walking
+            long end = System.nanoTime() + runSeconds * 1_000_000_000L;
+            if (kind == Kind.PUSH) {
+                Thread.sleep(1500); // stand up and start walking
+            }
             seen = sim.appliedCommands(0, appliedTicks, sourceTicks);
             while (System.nanoTime() < end && !(fell = isTrue(net, fallen))) {
                 int leg = legInTheAir(net, phase, end);
-                if (leg < 0) {
+                if (leg < 0 || (kind == Kind.CELL_BREAK && leg != HIND_RIGHT)) {
                     continue;
                 }
                 long first = sim.read(s) + 3;
                 shownAt.set(-1);
                 armedAfter.set(first);
-                sim.stimulate(new Push(first * 0.001, PUSH_SECONDS, PUSH_NEWTONS, CORNER_DEGREES[leg]));
+                sim.stimulate(kind == Kind.PUSH
+                        ? new Push(first * 0.001, PUSH_SECONDS, PUSH_NEWTONS, CORNER_DEGREES[leg])
+                        : new CellBreak(first * 0.001, FRONT_LEFT));
                 stimuli++;
                 long latency = await(sim);
                 armedAfter.set(Long.MAX_VALUE);
@@ -117,6 +166,9 @@ final class StimulusLatencyRun {
                 }
                 if (latency >= 0) {
                     sample.add(latency);
+                }
+                if (kind == Kind.CELL_BREAK) {
+                    break; // one break a run: the cell is gone
                 }
                 Thread.sleep(2000); // let the walk settle before the next push
             }

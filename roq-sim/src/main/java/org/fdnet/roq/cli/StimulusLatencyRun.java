@@ -105,14 +105,14 @@ final class StimulusLatencyRun {
     /** Sole-force-drop runs per measurement. */
     static final int CELL_BREAK_RUNS = 8;
 
-    /** {@code c} with a strong fragile cell (1000 N, 3 cm) under each standing foot, front-left's first. */
+    /** {@code c} with a strong fragile cell (1000 N, 8 cm deep: a drop that tips RoQ) under each standing foot, front-left's first. */
     static Course cellsUnderTheFeet(Course c) {
         List<FragileCell> cells = new ArrayList<>();
         double[] foot = new double[3];
         for (int leg = 0; leg < RoqGeometry.LEGS; leg++) {
             RoqGeometry.footInBody(leg, RoqGeometry.STANDING_POSE[0], RoqGeometry.STANDING_POSE[1],
                     RoqGeometry.STANDING_POSE[2], foot);
-            cells.add(new FragileCell(c.startX() + foot[0], c.startY() + foot[1], 0.12, 0.12, 0.03, 1000));
+            cells.add(new FragileCell(c.startX() + foot[0], c.startY() + foot[1], 0.12, 0.12, 0.08, 1000));
         }
         return c.withFragileCells(cells);
     }

@@ -26,6 +26,17 @@ JNIEXPORT jint JNICALL Java_org_fdnet_roq_sim_RoqNative_blockSize(JNIEnv *env, j
     return ROQ_BLOCK_SIZE;
 }
 
+JNIEXPORT jintArray JNICALL Java_org_fdnet_roq_sim_RoqNative_layoutOffsets(JNIEnv *env, jclass cls) {
+    (void)cls;
+    static const jint offsets[] = ROQ_LAYOUT_OFFSETS;
+    jsize n = (jsize)(sizeof offsets / sizeof offsets[0]);
+    jintArray a = (*env)->NewIntArray(env, n);
+    if (a != NULL) {
+        (*env)->SetIntArrayRegion(env, a, 0, n, offsets);
+    }
+    return a;
+}
+
 JNIEXPORT jlong JNICALL Java_org_fdnet_roq_sim_RoqNative_open(JNIEnv *env, jclass cls, jstring path,
         jfloatArray heights, jdoubleArray fragile, jdoubleArray params, jobject block) {
     (void)cls;

@@ -30,12 +30,22 @@ typedef struct {
     unsigned char fragile_broken[ROQ_MAX_FRAGILE];
     int broken_count;
 
+    int gyro_adr, accel_adr;           /* MuJoCo's gyro and accelerometer sensors on the body's imu site */
+    double imu_bias[6];                /* seeded at open: gyro rad/s, accelerometer m/s^2 */
+    uint64_t imu_noise_state;          /* its own stream, so the older sensors' noise is unchanged */
+
+    int64_t last_stimulus_seq;
+    int nstimuli;                      /* the stimulus table as last taken from the block */
+    int64_t stimulus_kind[ROQ_MAX_STIMULI], stimulus_first[ROQ_MAX_STIMULI], stimulus_end[ROQ_MAX_STIMULI];
+    double stimulus_value[ROQ_MAX_STIMULI][3];
+
     double target[ROQ_JOINTS];
     double wheel_target[ROQ_LEGS];
     int64_t last_command_seq;
     int64_t tick;
     int64_t snapshot_seq;
     int64_t depth_frames;
+    int applied_slot;                  /* the ring slot written this tick, for publish to copy; -1 none */
     int histogram_bin;                 /* the latency bin counted this tick, for publish to copy; -1 none */
     uint64_t noise_state;
 

@@ -18,17 +18,22 @@ static double clampd(double v, double lo, double hi) {
 }
 
 /* xorshift64*: seeded, reproducible noise in [-1, 1). */
-static double noise(roq_sim *s) {
-    uint64_t x = s->noise_state;
+static double noise_from(uint64_t *state) {
+    uint64_t x = *state;
     x ^= x >> 12;
     x ^= x << 25;
     x ^= x >> 27;
-    s->noise_state = x;
+    *state = x;
     return ((double)((x * 2685821657736338717ULL) >> 11) / 9007199254740992.0) * 2.0 - 1.0;
 }
 
 static double noisy(roq_sim *s, double v, double amplitude) {
-    return s->p[P_NOISE] != 0 ? v + amplitude * noise(s) : v;
+    return s->p[P_NOISE] != 0 ? v + amplitude * noise_from(&s->noise_state) : v;
+}
+
+/* IMU noise: its own stream, so adding the IMU left every older sensor's noise as it was. */
+static double imu_noisy(roq_sim *s, double v, double amplitude) {
+    return s->p[P_NOISE] != 0 ? v + amplitude * noise_from(&s->imu_noise_state) : v;
 }
 
 static double joint_min(const roq_sim *s, int j) { return s->p[P_JOINT_MIN_0 + j % JOINTS_PER_LEG]; }
@@ -45,6 +50,7 @@ static void take_command(roq_sim *s) {
     double targets[ROQ_JOINTS], wheels[ROQ_LEGS];
     int64_t issued = *(volatile int64_t *)BLK_L(b, C_ISSUED_TICK);
     int64_t flags = *(volatile int64_t *)BLK_L(b, C_FLAGS);
+    int64_t source = *(volatile int64_t *)BLK_L(b, C_SOURCE_TICK);
     memcpy(targets, b + C_TARGETS, sizeof targets);
     memcpy(wheels, b + C_WHEEL_SPEED, sizeof wheels);
     __atomic_thread_fence(__ATOMIC_ACQUIRE);
@@ -80,12 +86,80 @@ static void take_command(roq_sim *s) {
         }
         s->wheel_target[i] = v;
     }
-    (*BLK_L(st, T_COMMANDS_APPLIED))++;
-    /* reflex latency: applied now, the command first shows in snapshot tick + 1 */
+    int64_t n = ++(*BLK_L(st, T_COMMANDS_APPLIED));
+    /* reflex latency: applied now, the command first shows in snapshot tick + 1; a command computed from no
+       snapshot (source 0) has none */
+    source = source < 0 ? issued : source;
     *BLK_L(st, T_LAST_APPLIED_TICK) = s->tick;
-    *BLK_L(st, T_LAST_APPLIED_BASED_ON) = issued;
-    int64_t reflex = s->tick + 1 - issued;
-    BLK_I(st, T_REFLEX_HISTOGRAM)[reflex < 0 ? 0 : (reflex >= ROQ_REFLEX_BINS ? ROQ_REFLEX_BINS - 1 : reflex)]++;
+    *BLK_L(st, T_LAST_APPLIED_BASED_ON) = source;
+    s->applied_slot = (int)((n - 1) % ROQ_APPLIED_RING);
+    BLK_L(st, A_RING + A_ENTRY_SIZE * s->applied_slot)[0] = s->tick;
+    BLK_L(st, A_RING + A_ENTRY_SIZE * s->applied_slot)[1] = source;
+    if (source > 0) {
+        int64_t reflex = s->tick + 1 - source;
+        BLK_I(st, T_REFLEX_HISTOGRAM)[reflex < 0 ? 0 : (reflex >= ROQ_REFLEX_BINS ? ROQ_REFLEX_BINS - 1 : reflex)]++;
+    }
+}
+
+/* Takes a new, complete stimulus table from the block (same protocol as the command slot). */
+static void take_stimuli(roq_sim *s) {
+    unsigned char *b = s->block;
+    int64_t before = __atomic_load_n(BLK_L(b, L_STIMULUS_SEQ), __ATOMIC_ACQUIRE);
+    if (before == s->last_stimulus_seq || (before & 1)) {
+        return;
+    }
+    int64_t n = *(volatile int64_t *)BLK_L(b, X_COUNT);
+    n = n < 0 ? 0 : (n > ROQ_MAX_STIMULI ? ROQ_MAX_STIMULI : n);
+    int64_t kind[ROQ_MAX_STIMULI], first[ROQ_MAX_STIMULI], end[ROQ_MAX_STIMULI];
+    double value[ROQ_MAX_STIMULI][3];
+    for (int i = 0; i < n; i++) {
+        const unsigned char *e = b + X_TABLE + X_ENTRY_SIZE * i;
+        kind[i] = ((volatile const int64_t *)e)[0];
+        first[i] = ((volatile const int64_t *)e)[1];
+        end[i] = ((volatile const int64_t *)e)[2];
+        memcpy(value[i], e + 24, sizeof value[i]);
+    }
+    __atomic_thread_fence(__ATOMIC_ACQUIRE);
+    if (__atomic_load_n(BLK_L(b, L_STIMULUS_SEQ), __ATOMIC_RELAXED) != before) {
+        return; /* Java was writing: take it next tick */
+    }
+    s->last_stimulus_seq = before;
+    s->nstimuli = (int)n;
+    memcpy(s->stimulus_kind, kind, sizeof(int64_t) * (size_t)n);
+    memcpy(s->stimulus_first, first, sizeof(int64_t) * (size_t)n);
+    memcpy(s->stimulus_end, end, sizeof(int64_t) * (size_t)n);
+    memcpy(s->stimulus_value, value, sizeof(double) * 3 * (size_t)n);
+}
+
+static void break_cell(roq_sim *s, int i);
+
+/*
+ * Stimuli of this tick: the pushes active now add up to one force on the body's centre of mass
+ * (d->xfrc_applied, read by mj_step2), and a cell due to break now breaks whatever stands on it.
+ */
+static void apply_stimuli(roq_sim *s) {
+    double f[3] = {0, 0, 0};
+    for (int i = 0; i < s->nstimuli; i++) {
+        if (s->tick < s->stimulus_first[i] || s->tick >= s->stimulus_end[i]) {
+            continue;
+        }
+        if (s->stimulus_kind[i] == X_KIND_PUSH) {
+            for (int r = 0; r < 3; r++) {
+                f[r] += s->stimulus_value[i][r];
+            }
+        } else if (s->stimulus_kind[i] == X_KIND_BREAK && s->tick == s->stimulus_first[i]) {
+            int cell = (int)s->stimulus_value[i][0];
+            if (cell >= 0 && cell < s->nfragile && !s->fragile_broken[cell]) {
+                break_cell(s, cell);
+            }
+        }
+    }
+    mjtNum *x = s->d->xfrc_applied + 6 * s->body_id;
+    for (int r = 0; r < 3; r++) {
+        x[r] = f[r];
+        x[r + 3] = 0;
+        BLK_D(s->stage, S_PUSH_FORCE)[r] = f[r];
+    }
 }
 
 /*
@@ -161,6 +235,9 @@ static void state_sensors(roq_sim *s) {
     for (int r = 0; r < 4; r++) {
         BLK_D(st, S_BODY_QUATERNION)[r] = q[r];
     }
+    for (int r = 0; r < 3; r++) { /* gyro: mj_step1 computed the velocity sensors */
+        BLK_D(st, S_GYRO)[r] = imu_noisy(s, d->sensordata[s->gyro_adr + r] + s->imu_bias[r], 0.005);
+    }
 
     /* Range sensors refresh at their own rates (rays are the tick's dearest part); between refreshes the
        snapshot keeps their last reading. */
@@ -234,6 +311,9 @@ static void force_sensors(roq_sim *s) {
     for (int i = 0; i < ROQ_LEGS; i++) {
         BLK_D(s->stage, S_FOOT_FORCE)[i] = noisy(s, foot[i], 0.5);
     }
+    for (int r = 0; r < 3; r++) { /* accelerometer: mj_step2 computed the acceleration sensors */
+        BLK_D(s->stage, S_ACCEL)[r] = imu_noisy(s, s->d->sensordata[s->accel_adr + r] + s->imu_bias[3 + r], 0.05);
+    }
     int hold = (int)s->p[P_BREAK_HOLD_TICKS];
     for (int i = 0; i < s->nfragile; i++) {
         if (s->fragile_broken[i]) {
@@ -260,12 +340,19 @@ static void publish(roq_sim *s) {
         s->histogram_bin = -1;
     }
     memcpy(s->block + T_REFLEX_HISTOGRAM, s->stage + T_REFLEX_HISTOGRAM, 4 * ROQ_REFLEX_BINS);
+    if (s->applied_slot >= 0) {
+        memcpy(s->block + A_RING + A_ENTRY_SIZE * s->applied_slot, s->stage + A_RING + A_ENTRY_SIZE * s->applied_slot,
+               A_ENTRY_SIZE);
+        s->applied_slot = -1;
+    }
     s->snapshot_seq += 2;
     __atomic_store_n(seq, s->snapshot_seq, __ATOMIC_RELEASE);
 }
 
 void roq_tick(roq_sim *s) {
     take_command(s);
+    take_stimuli(s);
+    apply_stimuli(s);
     mj_step1(s->m, s->d);
     state_sensors(s);
     servos(s);
@@ -297,6 +384,7 @@ roq_sim *roq_open(const char *mjcf, const float *heights, int nheights, const do
     }
     s->dma_fd = -1;
     s->histogram_bin = -1;
+    s->applied_slot = -1;
     memcpy(s->p, params, sizeof s->p);
     s->block = block;
     s->stage = calloc(1, ROQ_BLOCK_SIZE);
@@ -372,6 +460,18 @@ roq_sim *roq_open(const char *mjcf, const float *heights, int nheights, const do
         s->fragile_strength[i] = fragile[6 * i + 5];
         s->geom_role[g] = 100 + i;
     }
+    s->gyro_adr = -1;
+    s->accel_adr = -1;
+    for (int k = 0; k < s->m->nsensor; k++) {
+        if (s->m->sensor_type[k] == mjSENS_GYRO) {
+            s->gyro_adr = s->m->sensor_adr[k];
+        } else if (s->m->sensor_type[k] == mjSENS_ACCELEROMETER) {
+            s->accel_adr = s->m->sensor_adr[k];
+        }
+    }
+    if (s->gyro_adr < 0 || s->accel_adr < 0) {
+        return fail(s, error, error_size, "model lacks the IMU: a gyro and an accelerometer sensor on the body");
+    }
     s->d = mj_makeData(s->m);
     for (int j = 0; j < ROQ_JOINTS; j++) {
         s->target[j] = params[P_INITIAL_POSE_0 + j % JOINTS_PER_LEG];
@@ -382,9 +482,21 @@ roq_sim *roq_open(const char *mjcf, const float *heights, int nheights, const do
     if (s->noise_state == 0) {
         s->noise_state = 1;
     }
+    s->imu_noise_state = (seed + 1) * 0xD1B54A32D192ED03ULL + 0x8BB84B93962EACC9ULL;
+    if (s->imu_noise_state == 0) {
+        s->imu_noise_state = 1;
+    }
+    if (params[P_NOISE] != 0) { /* a bias per axis, fixed for the run: gyro up to ±0.01 rad/s, accelerometer ±0.1 m/s^2 */
+        for (int r = 0; r < 6; r++) {
+            s->imu_bias[r] = (r < 3 ? 0.01 : 0.1) * noise_from(&s->imu_noise_state);
+        }
+    }
     memset(block, 0, ROQ_BLOCK_SIZE);
     *BLK_I(block, L_LAYOUT_VERSION) = ROQ_LAYOUT_VERSION;
     mj_forward(s->m, s->d);
+    for (int r = 0; r < 3; r++) {
+        BLK_D(s->stage, S_ACCEL)[r] = s->d->sensordata[s->accel_adr + r] + s->imu_bias[3 + r];
+    }
     int64_t period = (int64_t)params[P_DEPTH_ROW_PERIOD];
     if (period < 1 || ROQ_DEPTH_W % period != 0) {
         snprintf(msg, sizeof msg, "depth row period %lld must divide the image width %d", (long long)period, ROQ_DEPTH_W);

@@ -62,6 +62,11 @@ public abstract class Data {
         p.publish(value);
     }
 
+    /** The engine's side of this Data while it is in a running network, else null. */
+    final DataPort port() {
+        return port;
+    }
+
     final void bind(DataPort newPort) {
         this.port = newPort;
     }

@@ -50,7 +50,7 @@ final class DataNode implements Data.DataPort {
                 throw new IllegalArgumentException(data.getClass().getName() + ".accept returned "
                         + (accepted == null ? "null" : "a " + accepted.type() + " value"));
             }
-            return accepted;
+            return accepted.withTick(proposed.tick()); // a Data that reshapes a value keeps where it came from
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("writing " + ref + " (" + type.name().toLowerCase() + "): "
                     + e.getMessage(), e);
@@ -77,6 +77,10 @@ final class DataNode implements Data.DataPort {
 
     synchronized void removeObserver(DataValueObserver o) {
         observers = Arrays.stream(observers).filter(x -> x != o).toArray(DataValueObserver[]::new);
+    }
+
+    Dataflow flow() {
+        return flow;
     }
 
     @Override

@@ -19,6 +19,8 @@ final class FiringContext implements RelationContext {
     private long[] previousTimes = new long[0];
     private Value[] out = new Value[0];
     private boolean periodic;
+    /** The newest source tick among the inputs this firing read: its outputs carry it ({@link Value#tick()}). */
+    private long readTick;
     private long now;
     private String lastReport;
 
@@ -37,12 +39,18 @@ final class FiringContext implements RelationContext {
         }
         periodic = periodicNow;
         now = 0;
+        readTick = 0;
         flow.snapshot(w.inputs(), in);
     }
 
     void commit(Wiring w) {
         for (int i = 0; i < in.length; i++) {
             previousTimes[i] = in[i] == null ? -1 : in[i].time();
+        }
+        for (int i = 0; i < out.length; i++) {
+            if (out[i] != null && out[i].tick() < readTick) {
+                out[i] = out[i].withTick(readTick);
+            }
         }
         flow.commit(node, w.outputs(), out);
     }
@@ -68,7 +76,14 @@ final class FiringContext implements RelationContext {
 
     @Override
     public Value input(int index) {
-        return in[checkInput(index)];
+        return read(in[checkInput(index)]);
+    }
+
+    private Value read(Value v) {
+        if (v != null && v.tick() > readTick) {
+            readTick = v.tick();
+        }
+        return v;
     }
 
     private int checkInput(int index) {
@@ -84,7 +99,7 @@ final class FiringContext implements RelationContext {
         if (i < 0) {
             throw new IllegalArgumentException(node.ref + " does not read '" + name + "'");
         }
-        return in[i];
+        return read(in[i]);
     }
 
     @Override

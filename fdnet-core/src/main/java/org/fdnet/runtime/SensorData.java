@@ -12,6 +12,34 @@ public abstract class SensorData extends Data {
         publish(value);
     }
 
+    /**
+     * Puts {@code values[i]} into {@code sensors[i]}, all in one commit: a Relation that reads several of them sees
+     * all the new values or none (e.g. every reading of one sensor snapshot). A null sensor or value, or a sensor
+     * not in a running network, is left out. The sensors must belong to the same network. {@code values} is
+     * cleared. Thread-safe; runs the readers on the caller's thread when it can.
+     *
+     * @throws IllegalArgumentException when the sensors belong to different networks, or a value does not fit
+     *                                  (nothing is written then)
+     */
+    public static void pushTogether(SensorData[] sensors, Value[] values) {
+        DataNode[] nodes = new DataNode[sensors.length];
+        Dataflow flow = null;
+        for (int i = 0; i < sensors.length; i++) {
+            if (sensors[i] != null && sensors[i].port() instanceof DataNode n && n.alive) {
+                if (flow != null && n.flow() != flow) {
+                    throw new IllegalArgumentException("pushTogether: " + n.ref + " belongs to another network");
+                }
+                flow = n.flow();
+                nodes[i] = n;
+            }
+        }
+        if (flow != null) {
+            flow.commit(null, nodes, values);
+        } else {
+            java.util.Arrays.fill(values, null);
+        }
+    }
+
     /** The Data is wired and may push. */
     protected void start() {
     }

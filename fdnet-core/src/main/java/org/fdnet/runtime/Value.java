@@ -8,19 +8,28 @@ import org.fdnet.event.ValueType;
 import org.fdnet.netinfo.ParameterType;
 
 /**
- * One value of a Data: its type, its payload and the time it was written (µs since the epoch, from the
- * network's {@link org.fdnet.event.EventClock}; 0 while a Relation is still building it). Immutable:
- * arrays are copied in and out, so a value once published can be shared by every reader without a lock.
+ * One value of a Data: its type, its payload, the time it was written (µs since the epoch, from the
+ * network's {@link org.fdnet.event.EventClock}; 0 while a Relation is still building it) and its source
+ * tick: the number of the newest sensor snapshot it was computed from (0 when none), set by whoever pushes a
+ * sensor value ({@link #withTick}) and passed on by the engine — a Relation's outputs get the newest tick of the
+ * inputs it read. Immutable: arrays are copied in and out, so a value once published can be shared by every
+ * reader without a lock.
  */
 public final class Value {
     private final ValueType type;
     private final Object payload;
     private final long time;
+    private final long tick;
 
     private Value(ValueType type, Object payload, long time) {
+        this(type, payload, time, 0);
+    }
+
+    private Value(ValueType type, Object payload, long time, long tick) {
         this.type = type;
         this.payload = payload;
         this.time = time;
+        this.tick = tick;
     }
 
     public static Value of(boolean b) {
@@ -82,9 +91,19 @@ public final class Value {
         };
     }
 
-    /** The same payload stamped with {@code newTime}. */
+    /** The same payload and tick stamped with {@code newTime}. */
     public Value at(long newTime) {
-        return new Value(type, payload, newTime);
+        return new Value(type, payload, newTime, tick);
+    }
+
+    /** The same payload and time, computed from sensor snapshot {@code sourceTick} ({@link #tick()}). */
+    public Value withTick(long sourceTick) {
+        return sourceTick == tick ? this : new Value(type, payload, time, sourceTick);
+    }
+
+    /** The newest sensor snapshot this value was computed from (its tick number), 0 when none. */
+    public long tick() {
+        return tick;
     }
 
     public ValueType type() {
@@ -198,10 +217,10 @@ public final class Value {
             case DOUBLES -> ownDoubles(asDoubles());
             case BYTES -> throw new IllegalArgumentException("a " + type.name().toLowerCase() + " value cannot become bytes");
         };
-        return converted.at(time);
+        return converted.at(time).withTick(tick);
     }
 
-    /** Same type and payload (times may differ). */
+    /** Same type and payload (times and ticks may differ). */
     public boolean samePayload(Value other) {
         if (other == null || other.type != type) {
             return false;

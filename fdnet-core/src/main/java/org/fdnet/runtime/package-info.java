@@ -18,6 +18,10 @@
  *        └─ on the bounded worker pool (timer, budget spent, idle worker for parallel work)
  *   Relation fires: snapshot of its inputs (optimistic read of the commit lock) → compute → commit
  * </pre>
+ * Each value carries a source tick ({@link org.fdnet.runtime.Value#tick()}): the sensor snapshot it came from,
+ * set by the pusher; a firing's outputs get the newest tick of the inputs it read (one long per value, no
+ * allocation unless it changes). {@link org.fdnet.runtime.SensorData#pushTogether} commits several sensors'
+ * values under one lock, so no Relation sees half of one snapshot.
  *
  * <h2>Structure</h2>
  * <pre>

@@ -1,9 +1,12 @@
 package org.fdnet.roq.bridge;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.locks.LockSupport;
 import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.roq.node.JointTargets;
@@ -12,62 +15,83 @@ import org.fdnet.roq.sim.JointCommand;
 import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
+import org.fdnet.runtime.ChangeListener;
 import org.fdnet.runtime.RuntimeNetwork;
+import org.fdnet.runtime.SensorData;
 import org.fdnet.runtime.Value;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Joins a running network to RoQ's simulator: each snapshot feeds the network's {@link RoqSensor} Datas, and
- * the value of its {@link JointTargets} Data goes to the simulator's command slot.
+ * Joins a running network to RoQ's simulator: each snapshot feeds the network's {@link RoqSensor} Datas, all in
+ * one commit and stamped with the snapshot's tick; each new value of its {@link JointTargets} Data goes to the
+ * simulator's command slot as it is written.
+ *
+ * <pre>
+ *   snapshot n ──read──▶ every RoqSensor's reading, tick n ──SensorData.pushTogether (one commit)──▶ network
+ *   network ──JointTargets written (value observer)──▶ changed? ──▶ command, source tick = the value's ──▶ slot
+ * </pre>
  *
  * <ul>
  *   <li><b>Stepped</b> ({@link #stepped}): the network runs on a {@link org.fdnet.runtime.DrivenClock} started at
  *   {@code startMicros}; {@link #run} alternates, on the caller's thread, {@code sim.step(cycleTicks)} →
- *   read the snapshot → feed the sensors → {@code network.advanceTo(start + tick ms)} → send the targets.
- *   Nothing else runs, so a run is reproducible.</li>
+ *   read the snapshot → feed the sensors → {@code network.advanceTo(start + tick ms)}. Nothing else runs, so a
+ *   run is reproducible.</li>
  *   <li><b>Real time</b> ({@link #realTime}): a thread of its own polls the loop's snapshot (a seqlock read,
- *   no JNI), feeds each new one and sends the targets; the simulator's 1 kHz loop never waits for it.</li>
+ *   no JNI) and feeds each new one; the simulator's 1 kHz loop never waits for it.</li>
  * </ul>
- * The sensors and targets are looked up by name on each cycle, so a module unloaded and loaded again is fed again.
+ *
+ * <p>Commands are observed, not polled. In real time every value JointTargets takes that differs from the last one
+ * sent is sent at once (from the commit that wrote it), so none is skipped and none waits for the next snapshot.
+ * Stepped, the newest value of each cycle is sent at the cycle's end (the loop takes one command a tick, and a
+ * firing that finishes on a worker thread after {@code advanceTo} must not reach the loop at a wall-clock moment:
+ * the run stays reproducible). Its source tick
+ * ({@link Value#tick()}, the newest snapshot it was computed from) goes with it ({@link JointCommand#sourceTick});
+ * its freshness for the loop's staleness check is the newest snapshot read.
+ *
+ * <p>The bridge follows the network: after every settled change (edit, load, unload, reload, parameter change) it
+ * looks again for RoqSensor and JointTargets nodes, so one added or loaded is fed or followed from the next
+ * snapshot on, and one removed or unloaded is dropped at once.
  */
 public final class SimBridge implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(SimBridge.class);
 
     private final RuntimeNetwork network;
     private final RoqSimulator simulator;
-    private final List<NodeRef> sensors = new ArrayList<>();
-    private final List<NodeRef> targets = new ArrayList<>();
     private final SensorSnapshot snapshot = new SensorSnapshot();
     private final JointCommand command = new JointCommand();
     private final long startMicros;
     private final int cycleTicks;
+    private final ChangeListener follower = outcome -> follow();
+    /** Guarded by this: the JointTargets followed, by name, and their observer handles. */
+    private final Map<NodeRef, AutoCloseable> targetObservers = new HashMap<>();
+    private volatile RoqSensor[] sensors = new RoqSensor[0];
+    /** The feeding thread's scratch for one commit. */
+    private SensorData[] pushSensors = new SensorData[0];
+    private Value[] pushValues = new Value[0];
+    /** Guarded by {@link #command}: the last value sent, and (stepped) the newest one waiting for the cycle's end. */
+    private Value lastSent;
+    private Value pending;
+    private final boolean realTime;
     private volatile boolean running;
     private Thread thread;
     private volatile long cycles;
-    private volatile long lastTick = -1;
+    private volatile long commandsSent;
 
-    private SimBridge(RuntimeNetwork network, RoqSimulator simulator, long startMicros, int cycleTicks) {
+    private SimBridge(RuntimeNetwork network, RoqSimulator simulator, long startMicros, int cycleTicks,
+                      boolean realTime) {
         this.network = network;
+        this.realTime = realTime;
         this.simulator = simulator;
         this.startMicros = startMicros;
         this.cycleTicks = cycleTicks;
-        network.readDefinition(def -> {
-            for (ModuleInfo m : def.modules()) {
-                for (NodeInfo n : m.nodes()) {
-                    if (RoqSensor.class.getName().equals(n.className())) {
-                        sensors.add(new NodeRef(m.name(), n.name()));
-                    } else if (JointTargets.class.getName().equals(n.className())) {
-                        targets.add(new NodeRef(m.name(), n.name()));
-                    }
-                }
-            }
-            return null;
-        });
+        List<NodeRef> targets = nodesOf(JointTargets.class);
         if (targets.size() > 1) {
             throw new IllegalArgumentException("the network has " + targets.size() + " JointTargets Datas " + targets
                     + "; the simulator takes one set of targets");
         }
+        network.controller().addChangeListener(follower);
+        follow();
     }
 
     /**
@@ -78,12 +102,12 @@ public final class SimBridge implements AutoCloseable {
         if (cycleTicks < 1) {
             throw new IllegalArgumentException("cycleTicks must be at least 1, was " + cycleTicks);
         }
-        return new SimBridge(network, simulator, startMicros, cycleTicks);
+        return new SimBridge(network, simulator, startMicros, cycleTicks, false);
     }
 
     /** A real-time bridge on its own thread ("roq-bridge"); {@code network} runs on the wall clock. */
     public static SimBridge realTime(RuntimeNetwork network, RoqSimulator simulator) {
-        SimBridge b = new SimBridge(network, simulator, 0, 1);
+        SimBridge b = new SimBridge(network, simulator, 0, 1, true);
         b.running = true;
         b.thread = new Thread(b::poll, "roq-bridge");
         b.thread.setDaemon(true);
@@ -93,29 +117,30 @@ public final class SimBridge implements AutoCloseable {
 
     /** Stepped mode: runs {@code ticks} ticks of simulated time (rounded up to whole cycles) on this thread. */
     public void run(int ticks) {
-        if (thread != null) {
+        if (realTime) {
             throw new IllegalStateException("run(ticks) is for a stepped bridge; this one runs in real time");
         }
         for (int done = 0; done < ticks; done += cycleTicks) {
             simulator.step(cycleTicks);
             long tick = simulator.read(snapshot);
-            feed(tick);
+            feed();
             network.advanceTo(startMicros + tick * 1000L);
-            sendTargets(tick);
+            sendPending();
             cycles++;
         }
     }
 
     private void poll() {
+        long lastTick = -1;
         while (running) {
             long tick = simulator.read(snapshot);
             if (tick == lastTick) {
                 LockSupport.parkNanos(50_000);
                 continue;
             }
+            lastTick = tick;
             try {
-                feed(tick);
-                sendTargets(tick);
+                feed();
                 cycles++;
             } catch (RuntimeException e) {
                 LOG.error("roq-bridge: cycle at tick {} failed; the bridge goes on with the next snapshot", tick, e);
@@ -123,33 +148,113 @@ public final class SimBridge implements AutoCloseable {
         }
     }
 
-    private void feed(long tick) {
-        lastTick = tick;
-        for (NodeRef ref : sensors) {
-            RoqSensor s = network.dataInstance(ref, RoqSensor.class);
-            if (s != null) {
-                s.feed(snapshot, cycles);
+    /** Pushes every running RoqSensor's reading of the snapshot in one commit. */
+    private void feed() {
+        RoqSensor[] now = sensors;
+        if (pushSensors.length != now.length) {
+            pushSensors = new SensorData[now.length];
+            pushValues = new Value[now.length];
+        }
+        for (int i = 0; i < now.length; i++) {
+            pushSensors[i] = now[i];
+            pushValues[i] = now[i].reading(snapshot, cycles);
+        }
+        SensorData.pushTogether(pushSensors, pushValues);
+    }
+
+    /** A JointTargets value (called under the network's commit lock: sends and returns, never blocks). */
+    private void targetsWritten(NodeRef ref, int id, Value v) {
+        if (v == null || v.length() != RoqGeometry.JOINTS) {
+            return;
+        }
+        synchronized (command) {
+            if (realTime) {
+                send(v);
+            } else {
+                pending = v; // stepped: the loop takes one command a tick; send at the cycle's end, reproducibly
             }
         }
     }
 
-    private void sendTargets(long tick) {
-        if (targets.isEmpty()) {
+    private void sendPending() {
+        synchronized (command) {
+            if (pending != null) {
+                send(pending);
+                pending = null;
+            }
+        }
+    }
+
+    /** Sends {@code v} unless it equals the last value sent (the caller holds {@link #command}). */
+    private void send(Value v) {
+        if (v.samePayload(lastSent)) {
             return;
         }
-        JointTargets t = network.dataInstance(targets.get(0), JointTargets.class);
-        if (t == null) {
-            return;
-        }
-        Value v = t.value();
-        if (v == null || v.length() != RoqGeometry.JOINTS) {
-            return;
-        }
+        lastSent = v;
         for (int j = 0; j < RoqGeometry.JOINTS; j++) {
             command.target(j, v.element(j));
         }
-        command.basedOnTick(tick);
+        command.basedOnTick(-1).sourceTick(v.tick());
         simulator.send(command);
+        commandsSent++;
+    }
+
+    /** Looks again for the network's RoqSensor and JointTargets nodes. */
+    private synchronized void follow() {
+        List<RoqSensor> running = new ArrayList<>();
+        for (NodeRef ref : nodesOf(RoqSensor.class)) {
+            RoqSensor s = network.dataInstance(ref, RoqSensor.class);
+            if (s != null) {
+                running.add(s);
+            }
+        }
+        sensors = running.toArray(new RoqSensor[0]);
+        List<NodeRef> targets = nodesOf(JointTargets.class);
+        targetObservers.entrySet().removeIf(e -> {
+            if (targets.contains(e.getKey())) {
+                return false;
+            }
+            closeQuietly(e.getValue());
+            return true;
+        });
+        for (NodeRef ref : targets) {
+            if (!targetObservers.containsKey(ref)) {
+                targetObservers.put(ref, network.controller().observe(ref, this::targetsWritten));
+                JointTargets t = network.dataInstance(ref, JointTargets.class);
+                if (t != null) {
+                    targetsWritten(ref, -1, t.value());
+                }
+            }
+        }
+        if (targets.size() > 1) {
+            LOG.warn("roq-bridge: the network now has {} JointTargets Datas {}; each value written to any is sent",
+                    targets.size(), targets);
+        }
+    }
+
+    private List<NodeRef> nodesOf(Class<?> type) {
+        return network.readDefinition(def -> nodesOf(def, type));
+    }
+
+    /** The nodes of {@code definition} whose class is {@code type} (by name), in definition order. */
+    public static List<NodeRef> nodesOf(NetworkInfo definition, Class<?> type) {
+        List<NodeRef> refs = new ArrayList<>();
+        for (ModuleInfo m : definition.modules()) {
+            for (NodeInfo n : m.nodes()) {
+                if (type.getName().equals(n.className())) {
+                    refs.add(new NodeRef(m.name(), n.name()));
+                }
+            }
+        }
+        return refs;
+    }
+
+    private static void closeQuietly(AutoCloseable handle) {
+        try {
+            handle.close();
+        } catch (Exception e) {
+            LOG.warn("roq-bridge: closing a JointTargets observer failed", e);
+        }
     }
 
     /** The snapshot last fed (read it on the bridge's thread in stepped mode). */
@@ -162,7 +267,17 @@ public final class SimBridge implements AutoCloseable {
         return cycles;
     }
 
-    /** Stops the real-time thread (a stepped bridge has none). Does not close the network or the simulator. */
+    /** Commands sent so far: one per JointTargets value that differed from the one before. */
+    public long commandsSent() {
+        return commandsSent;
+    }
+
+    /** The RoqSensor Datas fed now. */
+    public int sensorsFed() {
+        return sensors.length;
+    }
+
+    /** Stops the real-time thread (a stepped bridge has none) and stops following the network. */
     @Override
     public void close() {
         running = false;
@@ -172,6 +287,11 @@ public final class SimBridge implements AutoCloseable {
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
+        }
+        network.controller().removeChangeListener(follower);
+        synchronized (this) {
+            targetObservers.values().forEach(SimBridge::closeQuietly);
+            targetObservers.clear();
         }
     }
 }

@@ -10,10 +10,11 @@ import org.fdnet.runtime.Value;
 
 /**
  * A sensor of RoQ in the network: parameter {@code channel} (required) names which — {@code joint_angles},
- * {@code joint_velocities}, {@code joint_torques}, {@code attitude}, {@code foot_forces}, {@code foot_contacts},
+ * {@code joint_velocities}, {@code joint_torques}, {@code attitude}, {@code imu_gyro}, {@code imu_accel}, {@code foot_forces}, {@code foot_contacts},
  * {@code wheel_speeds}, {@code ir_range}, {@code ultrasonic_range}, {@code body_position},
  * {@code centre_of_mass}, {@code depth_image} (see {@link SensorChannel}); {@code every} (default 1) feeds one
- * simulator snapshot in that many. The {@link org.fdnet.roq.bridge.SimBridge} pushes the values.
+ * simulator snapshot in that many. The {@link org.fdnet.roq.bridge.SimBridge} pushes the values, every sensor of
+ * one snapshot in one commit, each stamped with the snapshot's tick.
  */
 public class RoqSensor extends SensorData {
     private SensorChannel channel;
@@ -46,12 +47,16 @@ public class RoqSensor extends SensorData {
         return channel;
     }
 
-    /** Feeds snapshot number {@code count} when it is one of this sensor's (one in {@code every}). */
-    public void feed(SensorSnapshot snapshot, long count) {
+    /**
+     * Its reading of snapshot number {@code count}, stamped with the snapshot's tick ({@link Value#tick()}), when
+     * that snapshot is one of this sensor's (one in {@code every}); else null. The bridge pushes the readings of
+     * all sensors of one snapshot together.
+     */
+    public Value reading(SensorSnapshot snapshot, long count) {
         if (count % every != 0) {
-            return;
+            return null;
         }
         channel.read(snapshot, buffer);
-        push(Value.ofDoubles(buffer));
+        return Value.ofDoubles(buffer).withTick(snapshot.tick());
     }
 }

@@ -13,6 +13,10 @@ public enum SensorChannel {
     JOINT_TORQUES(RoqGeometry.JOINTS),
     /** The inclinometer: roll and pitch, rad. */
     ATTITUDE(2),
+    /** The IMU's gyro: body angular rate about x (roll), y (pitch), z (yaw), rad/s. */
+    IMU_GYRO(3),
+    /** The IMU's accelerometer: specific force along the body's x, y, z, m/s² (+9.81 on z standing level). */
+    IMU_ACCEL(3),
     /** The 4 foot force sensors, N. */
     FOOT_FORCES(RoqGeometry.LEGS),
     /** The 4 foot contact switches, 1 or 0. */
@@ -57,6 +61,16 @@ public enum SensorChannel {
             case ATTITUDE -> {
                 into[0] = s.roll();
                 into[1] = s.pitch();
+            }
+            case IMU_GYRO -> {
+                for (int i = 0; i < 3; i++) {
+                    into[i] = s.gyro(i);
+                }
+            }
+            case IMU_ACCEL -> {
+                for (int i = 0; i < 3; i++) {
+                    into[i] = s.accelerometer(i);
+                }
             }
             case FOOT_FORCES -> {
                 for (int i = 0; i < length; i++) {

@@ -19,10 +19,12 @@ import java.util.List;
  * @param startX        where the robot's body centre starts, m
  * @param startY        m
  * @param fragileCells  blocks that break under load
+ * @param stimuli       pushes and cell breaks applied at set times ({@link Stimulus}); at most
+ *                      {@link SharedBlockLayout#MAX_STIMULI}
  */
 public record Course(String name, TerrainKind terrain, double length, double width, double cellSize,
                      double slopeDegrees, double rubbleHeight, double rubbleBlock, long seed,
-                     double startX, double startY, List<FragileCell> fragileCells) {
+                     double startX, double startY, List<FragileCell> fragileCells, List<Stimulus> stimuli) {
     /** Most fragile cells a course may have (the snapshot's broken-cell bit mask). */
     public static final int MAX_FRAGILE_CELLS = 256;
 
@@ -48,6 +50,23 @@ public record Course(String name, TerrainKind terrain, double length, double wid
             require(Math.abs(c.x()) + c.sizeX() / 2 <= length / 2 && Math.abs(c.y()) + c.sizeY() / 2 <= width / 2,
                     "fragile cell " + i + " at " + c.x() + " " + c.y() + " lies outside the course");
         }
+        stimuli = List.copyOf(stimuli);
+        require(stimuli.size() <= SharedBlockLayout.MAX_STIMULI,
+                "a course has at most " + SharedBlockLayout.MAX_STIMULI + " pushes and breaks, this one " + stimuli.size());
+        for (Stimulus x : stimuli) {
+            if (x instanceof CellBreak b) {
+                require(b.cell() < fragileCells.size(), "break names fragile cell " + b.cell() + " but the course has "
+                        + fragileCells.size() + " (numbered from 0)");
+            }
+        }
+    }
+
+    /** A course without pushes or breaks. */
+    public Course(String name, TerrainKind terrain, double length, double width, double cellSize, double slopeDegrees,
+                  double rubbleHeight, double rubbleBlock, long seed, double startX, double startY,
+                  List<FragileCell> fragileCells) {
+        this(name, terrain, length, width, cellSize, slopeDegrees, rubbleHeight, rubbleBlock, seed, startX, startY,
+                fragileCells, List.of());
     }
 
     private static void require(boolean ok, String message) {
@@ -74,12 +93,18 @@ public record Course(String name, TerrainKind terrain, double length, double wid
     /** This course with other fragile cells. */
     public Course withFragileCells(List<FragileCell> cells) {
         return new Course(name, terrain, length, width, cellSize, slopeDegrees, rubbleHeight, rubbleBlock, seed,
-                startX, startY, cells);
+                startX, startY, cells, stimuli);
     }
 
     /** This course with the robot starting elsewhere. */
     public Course withStart(double x, double y) {
         return new Course(name, terrain, length, width, cellSize, slopeDegrees, rubbleHeight, rubbleBlock, seed,
-                x, y, fragileCells);
+                x, y, fragileCells, stimuli);
+    }
+
+    /** This course with other pushes and cell breaks. */
+    public Course withStimuli(List<Stimulus> list) {
+        return new Course(name, terrain, length, width, cellSize, slopeDegrees, rubbleHeight, rubbleBlock, seed,
+                startX, startY, fragileCells, list);
     }
 }

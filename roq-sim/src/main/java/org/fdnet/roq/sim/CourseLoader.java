@@ -14,7 +14,9 @@ import java.util.Locale;
  * Reads a course file: one {@code key = value} per line, {@code #} starts a comment. Keys: {@code name},
  * {@code terrain} (flat | slope | rubble), {@code length}, {@code width}, {@code cell}, {@code slope} (degrees),
  * {@code rubble.height}, {@code rubble.block}, {@code seed}, {@code start} (x y), and any number of
- * {@code fragile = x y sizeX sizeY height strength} (m, m, m, m, m, N). Missing keys take {@link Course#flat()}'s
+ * {@code fragile = x y sizeX sizeY height strength} (m, m, m, m, m, N), and any number (up to 32 in all) of
+ * {@code push = start duration force direction} (s, s, N, degrees from +x, see {@link Push}) and
+ * {@code break = time cell} (s, fragile cell index from 0 in file order, see {@link CellBreak}). Missing keys take {@link Course#flat()}'s
  * values. Every error names the file and line.
  *
  * <pre>
@@ -23,6 +25,8 @@ import java.util.Locale;
  * seed    = 2004
  * start   = -1.5 0
  * fragile = 0.5 0.15 0.2 0.2 0.03 60
+ * push    = 2.0 0.1 150 90      # at 2 s, for 0.1 s, 150 N to the left
+ * break   = 3.5 0               # fragile cell 0 gives way at 3.5 s
  * </pre>
  */
 public final class CourseLoader {
@@ -78,6 +82,7 @@ public final class CourseLoader {
         double startX = d.startX();
         double startY = d.startY();
         List<FragileCell> cells = new ArrayList<>();
+        List<Stimulus> stimuli = new ArrayList<>();
         String[] lines = text.split("\r?\n", -1);
         for (int n = 0; n < lines.length; n++) {
             String where = source + ":" + (n + 1) + ": ";
@@ -116,8 +121,19 @@ public final class CourseLoader {
                         double[] v = numbers(value, 6, "fragile = x y sizeX sizeY height strength");
                         cells.add(new FragileCell(v[0], v[1], v[2], v[3], v[4], v[5]));
                     }
+                    case "push" -> {
+                        double[] v = numbers(value, 4, "push = start duration force direction");
+                        stimuli.add(new Push(v[0], v[1], v[2], v[3]));
+                    }
+                    case "break" -> {
+                        double[] v = numbers(value, 2, "break = time cell");
+                        if (v[1] != Math.rint(v[1])) {
+                            throw new IllegalArgumentException("break cell must be a whole index, was " + value);
+                        }
+                        stimuli.add(new CellBreak(v[0], (int) v[1]));
+                    }
                     default -> throw new IllegalArgumentException("unknown key '" + key + "' (name, terrain, length, "
-                            + "width, cell, slope, rubble.height, rubble.block, seed, start, fragile)");
+                            + "width, cell, slope, rubble.height, rubble.block, seed, start, fragile, push, break)");
                 }
             } catch (NumberFormatException e) {
                 throw new CourseFormatException(where + key + ": not a number: '" + value + "'", e);
@@ -130,7 +146,7 @@ public final class CourseLoader {
         }
         try {
             return new Course(name, terrain, length, width, cell, slope, rubbleHeight, rubbleBlock, seed,
-                    startX, startY, cells);
+                    startX, startY, cells, stimuli);
         } catch (IllegalArgumentException e) {
             throw new CourseFormatException(source + ": " + e.getMessage(), e);
         }

@@ -12,6 +12,7 @@ public final class JointCommand {
     private final double[] wheelSpeeds = new double[RoqGeometry.LEGS];
     private boolean wheelsEnabled;
     private long basedOnTick = -1;
+    private long sourceTick = -1;
 
     /** A command holding the standing pose, wheels braked. */
     public JointCommand() {
@@ -73,5 +74,21 @@ public final class JointCommand {
     /** The tick this command was computed from, or −1. */
     public long basedOnTick() {
         return basedOnTick;
+    }
+
+    /**
+     * The newest sensor snapshot the command was computed from, when that differs from {@link #basedOnTick()} (the
+     * freshness the loop's staleness check uses): a network's command computed now may rest on an older reading.
+     * 0: computed from no snapshot (the loop leaves it out of the reflex figures); −1 (the default): the same as
+     * {@link #basedOnTick()}. Returns this.
+     */
+    public JointCommand sourceTick(long tick) {
+        sourceTick = tick;
+        return this;
+    }
+
+    /** See {@link #sourceTick(long)}. */
+    public long sourceTick() {
+        return sourceTick;
     }
 }

@@ -56,10 +56,14 @@ public final class MjcfWriter {
         x.append("      <freejoint name=\"root\"/>\n");
         x.append(f("      <geom name=\"body\" type=\"box\" size=\"%s %s %s\" mass=\"%s\"%s/>\n",
                 BODY_LENGTH / 2, BODY_WIDTH / 2, BODY_HEIGHT / 2, BODY_MASS, ROBOT));
+        x.append("      <site name=\"imu\" pos=\"0 0 0\"/>\n");
         for (int leg = 0; leg < LEGS; leg++) {
             leg(x, leg);
         }
-        x.append("    </body>\n  </worldbody>\n</mujoco>\n");
+        x.append("    </body>\n  </worldbody>\n");
+        // The IMU (assumed part): MuJoCo's own gyro and accelerometer at the body's centre; C adds noise and bias.
+        x.append("  <sensor>\n    <gyro name=\"imu_gyro\" site=\"imu\"/>\n");
+        x.append("    <accelerometer name=\"imu_accel\" site=\"imu\"/>\n  </sensor>\n</mujoco>\n");
         return x.toString();
     }
 

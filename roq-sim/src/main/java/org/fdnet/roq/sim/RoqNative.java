@@ -16,6 +16,9 @@ final class RoqNative {
     /** ABI handshake: the C side's {@code ROQ_BLOCK_SIZE}. */
     static native int blockSize();
 
+    /** ABI handshake: every offset of the C side's layout, in the order of {@link SharedBlockLayout#FIELDS}. */
+    static native int[] layoutOffsets();
+
     /**
      * Loads the model file, fills the heightfield with {@code heights} (already scaled to 0..1), sets the robot in its initial pose and publishes the first
      * snapshot into {@code block}. Returns a handle; throws {@link IllegalStateException} with MuJoCo's message.

@@ -53,9 +53,11 @@ public final class RoqNativeLibrary {
         }
         int abi;
         int size;
+        int[] offsets;
         try {
             abi = RoqNative.abiVersion();
             size = RoqNative.blockSize();
+            offsets = RoqNative.layoutOffsets();
         } catch (UnsatisfiedLinkError e) {
             throw new NativeLibraryUnavailableException("roq-sim: " + loaded + " lacks the JNI entry points of this "
                     + "roq-sim (an old or foreign build); rebuild: mvn -B -pl roq-sim -am -DskipTests package", e);
@@ -64,6 +66,12 @@ public final class RoqNativeLibrary {
             throw new NativeLibraryUnavailableException("roq-sim: " + loaded + " was built for layout version " + abi
                     + " (block " + size + " bytes), this roq-sim needs version " + SharedBlockLayout.VERSION + " ("
                     + SharedBlockLayout.BLOCK_SIZE + " bytes); rebuild: mvn -B -pl roq-sim -am -DskipTests package", null);
+        }
+        String moved = SharedBlockLayout.firstMismatch(offsets);
+        if (moved != null) {
+            throw new NativeLibraryUnavailableException("roq-sim: " + loaded + " and this roq-sim disagree on the shared "
+                    + "block's layout (" + moved + "): roq_layout.h and SharedBlockLayout.java must move a field "
+                    + "together; rebuild: mvn -B -pl roq-sim -am -DskipTests package", null);
         }
     }
 

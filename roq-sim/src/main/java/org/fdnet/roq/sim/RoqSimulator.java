@@ -34,6 +34,7 @@ public final class RoqSimulator implements AutoCloseable {
     private final SimOptions options;
     private final ByteBuffer block;
     private final Object commandLock = new Object();
+    private final StimulusTable stimuli;
     private long handle;
     private volatile long lastReadTick;
 
@@ -43,6 +44,7 @@ public final class RoqSimulator implements AutoCloseable {
         this.options = options;
         this.block = block;
         this.handle = handle;
+        this.stimuli = new StimulusTable(block, course.fragileCells().size());
     }
 
     /** Opens {@code course} in {@code mode} with the default options ({@link SimOptions#of}). */
@@ -78,6 +80,9 @@ public final class RoqSimulator implements AutoCloseable {
             deleteQuietly(file);
         }
         RoqSimulator sim = new RoqSimulator(course, terrain, options, block, handle);
+        for (Stimulus x : course.stimuli()) {
+            sim.stimulate(x);
+        }
         if (options.mode() == SimMode.REAL_TIME) {
             String warnings;
             try {
@@ -190,8 +195,50 @@ public final class RoqSimulator implements AutoCloseable {
                 block.putDouble(SharedBlockLayout.C_WHEEL_SPEED + 8 * i, command.wheelSpeed(i));
             }
             block.putLong(SharedBlockLayout.C_FLAGS, command.wheelsEnabled() ? SharedBlockLayout.FLAG_WHEELS : 0);
+            block.putLong(SharedBlockLayout.C_SOURCE_TICK, command.sourceTick() < 0 ? issued : command.sourceTick());
             LONGS.setRelease(block, SharedBlockLayout.COMMAND_SEQ, seq + 2);
         }
+    }
+
+    /**
+     * Copies the applied commands numbered (from 0) {@code from} … (at most the {@link SharedBlockLayout#APPLIED_RING}
+     * newest) into {@code appliedTicks} / {@code sourceTicks}: the tick each was applied at (it shows in snapshot
+     * tick + 1) and the newest snapshot it was computed from (0: none). Returns how many commands have been applied
+     * in all; entries older than the ring are lost (fewer copied than asked). A seqlock read, no JNI.
+     *
+     * @return the number of commands applied so far, n: commands max({@code from}, n − 64) … n − 1 were copied, in
+     *         order, from index 0
+     */
+    public long appliedCommands(long from, long[] appliedTicks, long[] sourceTicks) {
+        while (true) {
+            long before = (long) LONGS.getAcquire(block, SharedBlockLayout.SNAPSHOT_SEQ);
+            if ((before & 1) != 0) {
+                Thread.onSpinWait();
+                continue;
+            }
+            long count = block.getLong(SharedBlockLayout.T_COMMANDS_APPLIED);
+            long first = Math.max(from, count - SharedBlockLayout.APPLIED_RING);
+            for (long n = first; n < count && n - first < appliedTicks.length; n++) {
+                int at = SharedBlockLayout.A_RING + SharedBlockLayout.A_ENTRY_SIZE * (int) (n % SharedBlockLayout.APPLIED_RING);
+                appliedTicks[(int) (n - first)] = block.getLong(at);
+                sourceTicks[(int) (n - first)] = block.getLong(at + 8);
+            }
+            VarHandle.acquireFence();
+            if (before == (long) LONGS.getOpaque(block, SharedBlockLayout.SNAPSHOT_SEQ)) {
+                return count;
+            }
+        }
+    }
+
+    /**
+     * Adds a push or cell break; the loop applies it from its {@link Stimulus#firstTick()} (a push already under way
+     * acts for what is left of it). Stimuli that have ended by the last {@link #read} snapshot are dropped to make
+     * room; at most {@link SharedBlockLayout#MAX_STIMULI} may be pending. No JNI.
+     *
+     * @throws IllegalArgumentException when a {@link CellBreak} names a cell the course lacks, or the table is full
+     */
+    public void stimulate(Stimulus stimulus) {
+        stimuli.add(stimulus, lastReadTick);
     }
 
     /** Copies the loop's statistics into {@code into} (a seqlock read, like {@link #read}). Returns {@code into}. */

@@ -7,7 +7,7 @@ import static org.fdnet.roq.sim.SharedBlockLayout.*;
 /**
  * One consistent set of the RoQ's sensor readings at one tick, owned by the caller and refilled in place by
  * {@link RoqSimulator#read(SensorSnapshot)} without allocating. Values a real RoQ senses: joint angles, velocities
- * and torques, inclinometer roll and pitch, sole contact forces, infrared and ultrasonic ranges, a depth image.
+ * and torques, inclinometer roll and pitch, IMU gyro and accelerometer, sole contact forces, infrared and ultrasonic ranges, a depth image.
  * Values it cannot sense are named {@code groundTruth…}: for tests and the view, not for controllers.
  */
 public final class SensorSnapshot {
@@ -29,6 +29,9 @@ public final class SensorSnapshot {
     private final long[] brokenMask = new long[Course.MAX_FRAGILE_CELLS / 64];
     private long depthFrames;
     private final float[] depth = new float[RoqGeometry.DEPTH_WIDTH * RoqGeometry.DEPTH_HEIGHT];
+    private final double[] gyro = new double[3];
+    private final double[] accelerometer = new double[3];
+    private final double[] pushForce = new double[3];
 
     /** Copies the snapshot region of the block; the caller holds the seqlock read. */
     void copyFrom(ByteBuffer b) {
@@ -62,6 +65,11 @@ public final class SensorSnapshot {
         for (int i = 0; i < depth.length; i++) {
             depth[i] = b.getFloat(S_DEPTH + 4 * i);
         }
+        for (int i = 0; i < 3; i++) {
+            gyro[i] = b.getDouble(S_GYRO + 8 * i);
+            accelerometer[i] = b.getDouble(S_ACCEL + 8 * i);
+            pushForce[i] = b.getDouble(S_PUSH_FORCE + 8 * i);
+        }
     }
 
     /** Copies every value of {@code other} into this snapshot. */
@@ -84,6 +92,9 @@ public final class SensorSnapshot {
         System.arraycopy(other.brokenMask, 0, brokenMask, 0, brokenMask.length);
         depthFrames = other.depthFrames;
         System.arraycopy(other.depth, 0, depth, 0, depth.length);
+        System.arraycopy(other.gyro, 0, gyro, 0, 3);
+        System.arraycopy(other.accelerometer, 0, accelerometer, 0, 3);
+        System.arraycopy(other.pushForce, 0, pushForce, 0, 3);
     }
 
     /** The loop's tick number (0 before the first tick). */
@@ -159,6 +170,27 @@ public final class SensorSnapshot {
     /** How many complete depth images the camera has produced (a row every {@link RoqGeometry#DEPTH_ROW_PERIOD_TICKS} ticks). */
     public long depthFrames() {
         return depthFrames;
+    }
+
+    /**
+     * IMU gyro: the body's angular rate about its own x (roll), y (pitch) and z (yaw) axes, component {@code i},
+     * rad/s (with noise ±5 mrad/s and a fixed bias up to ±10 mrad/s per axis when sensor noise is on).
+     */
+    public double gyro(int i) {
+        return gyro[i];
+    }
+
+    /**
+     * IMU accelerometer: specific force along the body's axes, component {@code i}, m/s² (standing level it reads
+     * about +9.81 on z; noise ±0.05 and a fixed bias up to ±0.1 m/s² per axis when sensor noise is on).
+     */
+    public double accelerometer(int i) {
+        return accelerometer[i];
+    }
+
+    /** Ground truth: the external push ({@link Push}) acting on the body during this tick, world frame, N. */
+    public double groundTruthPushForce(int i) {
+        return pushForce[i];
     }
 
     /** Ground truth, not sensed: the body centre's position in the course frame, component {@code i}, m. */

@@ -23,13 +23,15 @@ public final class SharedBlockLayout {
     }
 
     /** Layout version; changes whenever an offset does. */
-    public static final int VERSION = 3;
+    public static final int VERSION = 5;
     /** Size of the block, bytes. */
     public static final int BLOCK_SIZE = 16384;
 
     public static final int LAYOUT_VERSION = 0;
     public static final int SNAPSHOT_SEQ = 8;
     public static final int COMMAND_SEQ = 16;
+    /** Stimulus sequence: odd while Java writes the stimulus table (version 4). */
+    public static final int STIMULUS_SEQ = 24;
 
     // snapshot
     public static final int S_TICK = 64;
@@ -50,7 +52,13 @@ public final class SharedBlockLayout {
     public static final int S_BROKEN_MASK = 552;
     public static final int S_DEPTH_FRAMES = 584;
     public static final int S_DEPTH = 592;
-    public static final int S_END = S_DEPTH + 4 * RoqGeometry.DEPTH_WIDTH * RoqGeometry.DEPTH_HEIGHT;
+    /** IMU gyro: body-frame angular rate, rad/s, double[3] (version 4). */
+    public static final int S_GYRO = S_DEPTH + 4 * RoqGeometry.DEPTH_WIDTH * RoqGeometry.DEPTH_HEIGHT;
+    /** IMU accelerometer: body-frame specific force (reads +g upward at rest), m/s², double[3]. */
+    public static final int S_ACCEL = S_GYRO + 24;
+    /** Ground truth: the external push on the body this tick, world frame, N, double[3]. */
+    public static final int S_PUSH_FORCE = S_ACCEL + 24;
+    public static final int S_END = S_PUSH_FORCE + 24;
 
     // loop statistics
     public static final int T_TICKS = 4096;
@@ -84,13 +92,70 @@ public final class SharedBlockLayout {
     public static final int C_TARGETS = 12296;
     public static final int C_WHEEL_SPEED = 12392;
     public static final int C_FLAGS = 12424;
+    /** The newest snapshot the command was computed from: 0 none, negative = {@link #C_ISSUED_TICK} (version 5). */
+    public static final int C_SOURCE_TICK = 12432;
+    /**
+     * Applied-command ring (under the snapshot sequence): command n (from 1; {@link #T_COMMANDS_APPLIED} counts them)
+     * at slot (n − 1) % {@link #APPLIED_RING}: int64 the tick it was applied at, int64 its source tick.
+     */
+    public static final int A_RING = 14080;
+    public static final int A_ENTRY_SIZE = 16;
+    public static final int APPLIED_RING = 64;
     /** C_FLAGS bit: the wheel speeds are to be driven (else the wheels are braked). */
     public static final long FLAG_WHEELS = 1;
+
+    // stimulus table (written by Java under STIMULUS_SEQ; the tick applies it)
+    public static final int X_COUNT = 12440;
+    public static final int X_TABLE = 12448;
+    /** One entry: int64 kind, int64 first tick, int64 end tick (exclusive), double[3] force (N) or cell index. */
+    public static final int X_ENTRY_SIZE = 48;
+    public static final int MAX_STIMULI = 32;
+    public static final long X_KIND_PUSH = 1;
+    public static final long X_KIND_BREAK = 2;
 
     /** T_RT_FLAGS bits: what the real-time loop obtained. */
     public static final long RT_SCHED_FIFO = 1;
     public static final long RT_MLOCKALL = 2;
     public static final long RT_DMA_LATENCY = 4;
+
+    /**
+     * Every offset in the order of {@code ROQ_LAYOUT_OFFSETS} in roq_layout.h: the handshake compares the two lists
+     * field by field, so a field moved on one side only is caught and named.
+     */
+    static final String[] FIELDS = {"LAYOUT_VERSION", "SNAPSHOT_SEQ", "COMMAND_SEQ", "STIMULUS_SEQ",
+        "S_TICK", "S_TIME", "S_JOINT_ANGLE", "S_JOINT_VELOCITY", "S_JOINT_TORQUE", "S_ROLL", "S_PITCH", "S_FOOT_FORCE",
+        "S_IR_RANGE", "S_ULTRASONIC_RANGE", "S_BODY_POSITION", "S_BODY_QUATERNION", "S_CENTRE_OF_MASS",
+        "S_WHEEL_SPEED", "S_BROKEN_COUNT", "S_BROKEN_MASK", "S_DEPTH_FRAMES", "S_DEPTH", "S_GYRO", "S_ACCEL",
+        "S_PUSH_FORCE", "S_END", "T_TICKS", "T_OVERRUNS", "T_MAX_OVERRUN_NS", "T_MAX_LATENCY_NS", "T_LATENCY_SAMPLES",
+        "T_COMMANDS_APPLIED", "T_COMMANDS_NAN", "T_COMMANDS_OUT_OF_RANGE", "T_COMMANDS_STALE", "T_RT_FLAGS",
+        "T_MAX_TICK_NS", "T_LAST_APPLIED_TICK", "T_LAST_APPLIED_BASED_ON", "T_HISTOGRAM", "T_REFLEX_HISTOGRAM",
+        "C_ISSUED_TICK", "C_TARGETS", "C_WHEEL_SPEED", "C_FLAGS", "C_SOURCE_TICK", "A_RING", "A_ENTRY_SIZE", "APPLIED_RING", "X_COUNT", "X_TABLE", "X_ENTRY_SIZE", "MAX_STIMULI"};
+    static final int[] OFFSETS = {LAYOUT_VERSION, SNAPSHOT_SEQ, COMMAND_SEQ, STIMULUS_SEQ,
+        S_TICK, S_TIME, S_JOINT_ANGLE, S_JOINT_VELOCITY, S_JOINT_TORQUE, S_ROLL, S_PITCH, S_FOOT_FORCE,
+        S_IR_RANGE, S_ULTRASONIC_RANGE, S_BODY_POSITION, S_BODY_QUATERNION, S_CENTRE_OF_MASS,
+        S_WHEEL_SPEED, S_BROKEN_COUNT, S_BROKEN_MASK, S_DEPTH_FRAMES, S_DEPTH, S_GYRO, S_ACCEL,
+        S_PUSH_FORCE, S_END, T_TICKS, T_OVERRUNS, T_MAX_OVERRUN_NS, T_MAX_LATENCY_NS, T_LATENCY_SAMPLES,
+        T_COMMANDS_APPLIED, T_COMMANDS_NAN, T_COMMANDS_OUT_OF_RANGE, T_COMMANDS_STALE, T_RT_FLAGS,
+        T_MAX_TICK_NS, T_LAST_APPLIED_TICK, T_LAST_APPLIED_BASED_ON, T_HISTOGRAM, T_REFLEX_HISTOGRAM,
+        C_ISSUED_TICK, C_TARGETS, C_WHEEL_SPEED, C_FLAGS, C_SOURCE_TICK, A_RING, A_ENTRY_SIZE, APPLIED_RING, X_COUNT, X_TABLE, X_ENTRY_SIZE, MAX_STIMULI};
+
+    /**
+     * The first field whose offset differs between {@link #OFFSETS} and the native side's {@code nativeOffsets}, as
+     * "S_GYRO: Java 3664, native 3672", or null when they agree.
+     */
+    static String firstMismatch(int[] nativeOffsets) {
+        for (int i = 0; i < FIELDS.length; i++) {
+            if (i >= nativeOffsets.length) {
+                return FIELDS[i] + ": Java " + OFFSETS[i] + ", not in the native layout (" + nativeOffsets.length
+                        + " fields)";
+            }
+            if (OFFSETS[i] != nativeOffsets[i]) {
+                return FIELDS[i] + ": Java " + OFFSETS[i] + ", native " + nativeOffsets[i];
+            }
+        }
+        return nativeOffsets.length > FIELDS.length
+                ? "the native layout has " + nativeOffsets.length + " fields, Java " + FIELDS.length : null;
+    }
 
     /** A command older than this many ticks when the loop sees it is ignored and counted stale. */
     public static final int STALE_TICKS = 100;

@@ -2,15 +2,21 @@ package org.fdnet.logger;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.io.BufferedReader;
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.io.PrintStream;
+import java.io.StringReader;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
+import org.fdnet.logger.cli.LoggerPrompt;
 import org.fdnet.logger.config.LoggerConfig;
 import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.logger.server.ConnectionState;
@@ -60,9 +66,9 @@ class FaultToleranceTest {
     }
 
     @Test
-    void shouldReportTheDatabaseDownAfterItsAttemptsAndRetryOnlyWhenToldTo() throws Exception {
+    void shouldReportTheDatabaseDownAfterItsReconnectionAttemptsAndRetryOnlyWhenToldAtThePrompt() throws Exception {
         LoggerConfig config = database.fixture().loggerConfig().set(LoggerSetting.WRITER_RECONNECT_ATTEMPTS, "3")
-                .set(LoggerSetting.WRITER_RECONNECT_DELAY, "100");
+                .set(LoggerSetting.WRITER_RECONNECT_DELAY, "100").set(LoggerSetting.WRITER_CONNECTIONS, "1");
         try (NetworkStateLogger logger = new NetworkStateLogger(config)) {
             logger.start();
             try (LoggerClient client = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(),
@@ -75,14 +81,21 @@ class FaultToleranceTest {
                     assertThat(System.currentTimeMillis()).as(logger.writer().databaseState()).isLessThan(deadline);
                     Thread.sleep(50);
                 }
-                assertThat(logger.writer().databaseState()).contains(", 3 attempts; not retrying until told to");
+                // "Number of attempts" 3: three reconnections after the write that lost the database.
+                assertThat(logger.writer().databaseState()).contains(", 3 reconnection attempts; not retrying until told to");
+                assertThat(logger.writer().reconnectionAttempts()).isEqualTo(3);
                 // Down means no more attempts, even once the database is back: ten delays later still 3.
                 database.fixture().startDatabase();
                 Thread.sleep(1000);
-                assertThat(logger.writer().databaseState()).contains(", 3 attempts; not retrying until told to");
+                assertThat(logger.writer().databaseState()).contains(", 3 reconnection attempts; not retrying until told to");
+                assertThat(logger.writer().reconnectionAttempts()).isEqualTo(3);
                 assertThat(client.lostEvents()).isZero();
 
-                logger.retryDatabase();
+                // The headless logger's prompt: `retry` on its standard input (no SIGHUP).
+                ByteArrayOutputStream answers = new ByteArrayOutputStream();
+                new LoggerPrompt(logger, new BufferedReader(new StringReader("retry\n")),
+                        new PrintStream(answers, true, StandardCharsets.UTF_8)).run();
+                assertThat(answers.toString(StandardCharsets.UTF_8)).contains("retrying the database (was: DOWN since");
                 long produced = producer.stop();
                 assertThat(client.flush(90_000)).isTrue();
                 assertThat(client.lostEvents()).isZero();
@@ -110,7 +123,7 @@ class FaultToleranceTest {
                     assertThat(System.currentTimeMillis()).as("the logger gives up").isLessThan(deadline);
                     Thread.sleep(50);
                 }
-                assertThat(first.writer().databaseState()).contains("1 attempts");
+                assertThat(first.writer().databaseState()).contains("0 reconnection attempts");
             }
             database.fixture().startDatabase();
             try (NetworkStateLogger second = new NetworkStateLogger(config)) {

@@ -9,13 +9,16 @@ import java.io.OutputStream;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.UUID;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Supplier;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.event.wire.FrameWriter;
 import org.fdnet.event.wire.Hello;
 import org.fdnet.event.wire.MessageType;
+import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.logger.server.ClientInfo;
 import org.fdnet.logger.server.ConnectionState;
 import org.junit.jupiter.api.Test;
@@ -23,7 +26,11 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
-/** Garbage, truncated and oversized frames close their own connection only; good clients never notice. */
+/**
+ * Garbage, truncated and oversized frames close their own connection only; good clients never notice. One client
+ * beyond {@code receiver.maxClients} / {@code sender.maxClients} is refused with an ERROR naming the limit, while
+ * the ones served stay served; once one leaves, a new one is taken.
+ */
 @Timeout(value = 120, unit = TimeUnit.SECONDS)
 class ProtocolAbuseTest {
     @TempDir
@@ -118,6 +125,65 @@ class ProtocolAbuseTest {
             new DataOutputStream(out).writeInt(1000);
             out.write(new byte[] {(byte) MessageType.EVENTS.code(), 0, 0});
             out.flush();
+        }
+    }
+
+    @Test
+    void shouldRefuseTheClientBeyondEachServersMaximumAndTakeANewOneWhenOneLeaves() throws Exception {
+        try (NetworkStateLogger logger = new NetworkStateLogger(database.fixture().loggerConfig()
+                .set(LoggerSetting.RECEIVER_MAX_CLIENTS, "2").set(LoggerSetting.SENDER_MAX_CLIENTS, "1"))) {
+            logger.start();
+            keepsToTheMaximum(logger.receiverPort(), 2, () -> logger.status().cores(),
+                    out -> sendHello(out, Hello.core(UUID.randomUUID(), "core")), "receiver");
+            keepsToTheMaximum(logger.senderPort(), 1, () -> logger.status().viewers(),
+                    out -> sendHello(out, Hello.viewer("viewer")), "sender");
+        }
+    }
+
+    private static void keepsToTheMaximum(int port, int max, Supplier<List<ClientInfo>> clients,
+                                               Abuse hello, String server) throws Exception {
+        Socket[] served = new Socket[max];
+        try {
+            for (int i = 0; i < max; i++) {
+                served[i] = new Socket("127.0.0.1", port);
+                hello.send(served[i].getOutputStream());
+            }
+            awaitActive(clients, max);
+            String refused = closedWithError(port, hello);
+            assertThat(refused).isEqualTo("logger " + server + " is serving its maximum of " + max + " clients");
+            assertThat(active(clients)).as("the served ones are still served").isEqualTo(max);
+
+            served[0].close();
+            awaitActive(clients, max - 1);
+            try (Socket next = new Socket("127.0.0.1", port)) {
+                hello.send(next.getOutputStream());
+                awaitActive(clients, max);
+            }
+        } finally {
+            for (Socket s : served) {
+                if (s != null) {
+                    s.close();
+                }
+            }
+        }
+    }
+
+    private static void sendHello(OutputStream out, Hello hello) throws IOException {
+        FrameWriter w = new FrameWriter();
+        hello.write(w);
+        w.writeTo(out);
+        out.flush();
+    }
+
+    private static long active(Supplier<List<ClientInfo>> clients) {
+        return clients.get().stream().filter(c -> c.state() != ConnectionState.STOPPED).count();
+    }
+
+    private static void awaitActive(Supplier<List<ClientInfo>> clients, int n) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (active(clients) != n) {
+            assertThat(System.nanoTime()).as("%d clients served: %s", n, clients.get()).isLessThan(deadline);
+            Thread.sleep(20);
         }
     }
 }

@@ -18,7 +18,6 @@ import org.fdnet.hi.text.AdvancedModuleFrame;
 import org.fdnet.hi.text.BasicModuleFrame;
 import org.fdnet.hi.text.NetworkFrame;
 import org.fdnet.netinfo.ConnectionInfo;
-import org.fdnet.netinfo.MergePolicy;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
@@ -204,7 +203,12 @@ final class EditMenu {
             mergeInOneModule(two.get(0), two.get(1));
             return;
         }
-        MergeChoice choice = MergeChoice.ask(window, two.get(0), two.get(1));
+        CrossModuleMerge.Options offered = CrossModuleMerge.possible(editor().network(), two.get(0), two.get(1));
+        if (offered.choices().isEmpty()) {
+            window.status().error("Cannot make " + two.get(0) + " and " + two.get(1) + " one node: " + offered.whyNone());
+            return;
+        }
+        CrossModuleMerge choice = CrossModuleMerge.ask(window, two.get(0), two.get(1), offered.choices());
         window.canvas().requestFocus();
         if (choice == null) {
             return;
@@ -244,26 +248,6 @@ final class EditMenu {
             if (editor().deleteNode(ref).accepted()) {
                 window.status().info("Deleted " + ref + " and its connections");
             }
-        }
-    }
-
-    /**
-     * The answer for two nodes of different modules, which the thesis's dialog (one module, a name taken)
-     * does not cover: NetworkInfo merges across modules, so the graph offers it.
-     */
-    record MergeChoice(boolean replace, MergePolicy policy) {
-        static MergeChoice ask(HiWindow owner, NodeRef first, NodeRef second) {
-            String[] options = {"Merge, keep " + first.node() + "'s parameters", "Merge, keep " + second.node() + "'s parameters",
-                "Merge, keep both", "Replace " + second.node() + " by " + first.node(), "Cancel"};
-            int i = JOptionPane.showOptionDialog(owner, "Make " + first + " and " + second + " one node?",
-                    "Merge or Replace", JOptionPane.DEFAULT_OPTION, JOptionPane.QUESTION_MESSAGE, null, options, options[2]);
-            return switch (i) {
-                case 0 -> new MergeChoice(false, MergePolicy.FIRST);
-                case 1 -> new MergeChoice(false, MergePolicy.SECOND);
-                case 2 -> new MergeChoice(false, MergePolicy.BOTH);
-                case 3 -> new MergeChoice(true, null);
-                default -> null;
-            };
         }
     }
 }

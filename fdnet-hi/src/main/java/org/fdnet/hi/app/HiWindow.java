@@ -11,6 +11,7 @@ import javax.swing.JOptionPane;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JSplitPane;
+import javax.swing.SwingUtilities;
 import javax.swing.WindowConstants;
 import org.fdnet.hi.edit.EditorListener;
 import org.fdnet.hi.graph.GraphCanvas;
@@ -23,6 +24,7 @@ import org.fdnet.control.LiveNetwork;
 import org.fdnet.netinfo.ModuleCounts;
 import org.fdnet.netinfo.xml.NetworkFileException;
 import org.fdnet.netinfo.xml.Problem;
+import org.fdnet.viewer.legible.LegibleFont;
 
 /**
  * The editor's main window. It shows either one open network (module bar and search bar above the graphic
@@ -35,6 +37,7 @@ import org.fdnet.netinfo.xml.Problem;
 public final class HiWindow extends JFrame {
     private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(HiWindow.class);
     private final StatusBar status = new StatusBar();
+    private boolean illegibleNamesSaid;
     private final RecentFiles recent;
     private final JPanel content = new JPanel(new BorderLayout());
     private OpenNetwork current;
@@ -110,6 +113,27 @@ public final class HiWindow extends JFrame {
         return recent;
     }
 
+    /**
+     * Draws {@code network}'s names in a font that has their characters; when no installed font has, says so
+     * once (per window) in the status bar, naming the package to install — after what opening it says.
+     */
+    private void legibleNames(OpenNetwork network) {
+        LegibleFont.Choice c = NamesFont.forGraph(network.editor().network());
+        canvas.setNamesFont(c.font());
+        if (NamesFont.fitSwingDefault(network.editor().network())) {
+            SwingUtilities.updateComponentTreeUI(this);
+        }
+        if (!c.legible() && !illegibleNamesSaid) {
+            illegibleNamesSaid = true;
+            SwingUtilities.invokeLater(() -> status.error(c.warning()));
+        }
+    }
+
+    /** The font the graph draws names in (tests: every name displayable). */
+    public java.awt.Font namesFont() {
+        return canvas == null ? null : canvas.namesFont();
+    }
+
     /** Opens {@code file}: its network, or its problems read-only. */
     public void open(Path file) {
         try {
@@ -132,6 +156,7 @@ public final class HiWindow extends JFrame {
         problems = null;
         problemFile = null;
         canvas = new GraphCanvas(network.scene());
+        legibleNames(network);
         search = new SearchBar(network.scene(), canvas);
         info = new NodeInfoPanel(network.scene(), network.editor());
         info.reportTo(status);
@@ -217,7 +242,9 @@ public final class HiWindow extends JFrame {
         if (current == null) {
             return;
         }
-        String name = current.file() == null ? "untitled" : current.file().getFileName().toString();
+        String networkName = current.editor().network().name() == null ? "untitled" : current.editor().network().name();
+        String name = current.file() == null ? networkName + " (not saved)"
+                : networkName + " (" + current.file().getFileName() + ")";
         String state = live == null ? offline == null ? "" : " (" + offline + ")"
                 : live.collecting() ? " (collecting changes for " + live.name() + ")" : " (live: " + live.name() + ")";
         setTitle((current.unsaved() ? "*" : "") + name + state + " — FDNet editor");

@@ -23,6 +23,9 @@ public interface NetworkEditor {
     /** The network being edited; read it, never edit it directly. */
     NetworkInfo network();
 
+    /** Gives the network a new name (saved in the .fdn's {@code cnet name} and the .fdg). */
+    EditResult renameNetwork(String newName);
+
     EditResult addModule(String module, boolean loadAtStart);
 
     EditResult deleteModule(String module);

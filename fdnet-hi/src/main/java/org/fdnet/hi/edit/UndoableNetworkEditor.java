@@ -138,6 +138,14 @@ public final class UndoableNetworkEditor implements NetworkEditor {
     // ---------------------------------------------------------------- edits
 
     @Override
+    public EditResult renameNetwork(String newName) {
+        if (newName != null && newName.equals(network().name())) {
+            return EditResult.ok();
+        }
+        return apply("Rename network " + network().name(), NetworkEdits.rename(newName), null);
+    }
+
+    @Override
     public EditResult addModule(String module, boolean loadAtStart) {
         return apply("Add module " + module, ModuleEdits.add(module, loadAtStart, -1), null);
     }

@@ -3,6 +3,7 @@ package org.fdnet.hi.graph;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Dimension;
+import java.awt.Font;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.Point;
@@ -38,6 +39,7 @@ public final class GraphCanvas extends JComponent implements SceneListener {
     private double panX;
     private double panY;
     private Rectangle2D rubberBand;
+    private Font namesFont = Java2DSketch.PLAIN;
     private Consumer<NodeRef> onActivate = ref -> { };
     private BiConsumer<Point, NodeRef> onPopup = (p, ref) -> { };
 
@@ -104,6 +106,16 @@ public final class GraphCanvas extends JComponent implements SceneListener {
         return t;
     }
 
+    /** The font names are drawn in (one that draws every name: see HiWindow). */
+    public Font namesFont() {
+        return namesFont;
+    }
+
+    public void setNamesFont(Font font) {
+        namesFont = font;
+        repaint();
+    }
+
     @Override
     protected void paintComponent(Graphics graphics) {
         Graphics2D g = (Graphics2D) graphics.create();
@@ -114,7 +126,7 @@ public final class GraphCanvas extends JComponent implements SceneListener {
             AffineTransform t = transform();
             g.transform(t);
             Rectangle2D modelClip = clip == null ? null : inverse(t).createTransformedShape(clip).getBounds2D();
-            painter.paint(new Java2DSketch(g, zoom >= GraphPainter.LABEL_SCALE), modelClip, zoom);
+            painter.paint(new Java2DSketch(g, zoom >= GraphPainter.LABEL_SCALE, namesFont), modelClip, zoom);
             if (rubberBand != null) {
                 g.setColor(new Color(0x1F6FEB));
                 g.setStroke(new BasicStroke((float) (1 / zoom)));

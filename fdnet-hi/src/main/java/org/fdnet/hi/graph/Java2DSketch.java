@@ -10,22 +10,29 @@ import java.awt.Shape;
 
 /** A {@link Sketch} on a Graphics2D: the canvas on screen and PNG export. */
 public final class Java2DSketch implements Sketch {
-    static final Font PLAIN = new Font(Font.SANS_SERIF, Font.PLAIN, 12);
-    static final Font BOLD = PLAIN.deriveFont(Font.BOLD);
+    /** The names' font unless the names need another ({@link org.fdnet.viewer.legible.LegibleFont}). */
+    public static final Font PLAIN = new Font(Font.SANS_SERIF, Font.PLAIN, 12);
     private static final float[] DASH = {6f, 4f};
 
     /** Strokes by width (negative: dashed); a drawing uses a handful. */
     private static final java.util.Map<Float, BasicStroke> STROKES = new java.util.concurrent.ConcurrentHashMap<>();
 
     private final Graphics2D g;
+    private final Font plain;
+    private final Font bold;
 
     public Java2DSketch(Graphics2D g) {
-        this(g, true);
+        this(g, true, PLAIN);
     }
 
-    /** {@code smooth} false: no antialiasing, for zoomed-out views of large drawings where it costs most. */
-    public Java2DSketch(Graphics2D g, boolean smooth) {
+    /**
+     * {@code smooth} false: no antialiasing, for zoomed-out views of large drawings where it costs most;
+     * {@code names}: the font that draws every name of the network.
+     */
+    public Java2DSketch(Graphics2D g, boolean smooth, Font names) {
         this.g = g;
+        this.plain = names;
+        this.bold = names.deriveFont(Font.BOLD);
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, smooth ? RenderingHints.VALUE_ANTIALIAS_ON
                 : RenderingHints.VALUE_ANTIALIAS_OFF);
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
@@ -48,7 +55,7 @@ public final class Java2DSketch implements Sketch {
 
     @Override
     public void text(String text, double cx, double cy, Color colour, boolean bold) {
-        g.setFont(bold ? BOLD : PLAIN);
+        g.setFont(bold ? this.bold : plain);
         g.setColor(colour);
         FontMetrics fm = g.getFontMetrics();
         g.drawString(text, (float) (cx - fm.stringWidth(text) / 2.0),

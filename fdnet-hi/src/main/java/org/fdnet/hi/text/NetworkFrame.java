@@ -26,7 +26,8 @@ import org.fdnet.hi.speedy.SpeedyDesign;
 import org.fdnet.netinfo.ModuleCounts;
 
 /**
- * The Network frame (thesis Chapter 5 §IX): the network's name and its modules in numbers — Datas, Relations,
+ * The Network frame (thesis Chapter 5 §IX): the network's name (typed anew and Rename: one undoable step) and
+ * its modules in numbers — Datas, Relations,
  * Readers and Writers per module and in total — and the module form that adds a module (New), sets an
  * existing one's load-at-start flag (Edit) or deletes it; Open shows a module in the {@link BasicModuleFrame}.
  * A thin view over {@link NetworkSummaryModel}.
@@ -37,7 +38,8 @@ public final class NetworkFrame extends JDialog {
     private final transient QuietRefresh quiet = new QuietRefresh();
     private final transient NetworkSummaryModel model;
 
-    final JLabel networkName = new JLabel();
+    final JTextField networkName = new JTextField(16);
+    final JButton rename = new JButton("Rename");
     final JLabel moduleCount = new JLabel();
     final DefaultTableModel rows = new DefaultTableModel(
             new Object[] {"Module", "Load at start", "Datas", "Relations", "Readers", "Writers"}, 0) {
@@ -63,7 +65,11 @@ public final class NetworkFrame extends JDialog {
 
         JPanel info = new JPanel(new FlowLayout(FlowLayout.LEFT, 16, 4));
         info.setBorder(BorderFactory.createTitledBorder("Network information"));
+        info.add(new JLabel("Network Name :"));
+        networkName.setName("networkName");
+        rename.setName("renameNetwork");
         info.add(networkName);
+        info.add(rename);
         info.add(moduleCount);
 
         JScrollPane scroll = new JScrollPane(table);
@@ -107,7 +113,7 @@ public final class NetworkFrame extends JDialog {
 
     private void refreshRows() {
         quiet.run(() -> {
-            networkName.setText("Network Name : " + model.networkName());
+            networkName.setText(model.networkName());
             List<NetworkSummaryModel.ModuleRow> list = model.moduleRows();
             moduleCount.setText("Number of modules : " + list.size());
             String selected = selectedModule();
@@ -172,6 +178,15 @@ public final class NetworkFrame extends JDialog {
             show(model.delete(name), "deleted module " + name + ", its nodes and every connection to them");
         });
         open.addActionListener(e -> BasicModuleFrame.open(this, editor, model.typedModuleName()));
+        rename.addActionListener(e -> renameNetwork());
+        networkName.addActionListener(e -> renameNetwork());
+    }
+
+    /** The typed name becomes the network's (one undoable step, saved with the network). */
+    private void renameNetwork() {
+        String typed = networkName.getText();
+        show(editor.renameNetwork(typed), "renamed the network to " + typed);
+        refreshRows();
     }
 
     private void show(EditResult r, String done) {

@@ -135,16 +135,19 @@ public final class EditorRoundTripScenario {
         waitFor("judge's expression changed", () -> window.current().editor().network().node(JUDGE).parameter("expression").contains("0.3"));
         NetworkInfo edited = edt(() -> window.current().editor().network().copy());
 
-        // A refused merge (a Data with a Relation): nothing changes, the status bar says why, nothing to undo.
+        // A Data and a Relation of different modules: nothing can make them one node, so Ctrl-M offers nothing
+        // (no dialog); the status bar says why; nothing changes, nothing to undo.
         click(BALANCE, 0);
         click(JUDGE, InputEvent.CTRL_DOWN_MASK);
         waitFor("two nodes selected", () -> scene.selection().size() == 2);
         Rectangle2D judgePlace = edt(() -> scene.bounds(JUDGE));
         String undoBefore = edt(() -> window.current().editor().undoLabel());
         key(KeyEvent.VK_M, InputEvent.CTRL_DOWN_MASK);
-        JDialog question = dialog();
-        SwingUtilities.invokeAndWait(() -> find(question, AbstractButton.class, "Merge, keep both").doClick());
-        waitFor("the refusal in the status bar", () -> window.status().message().startsWith("Refused"));
+        waitFor("the reason in the status bar", () -> window.status().message().startsWith("Cannot make " + BALANCE));
+        check(edt(() -> window.status().message()).contains("replace works within one module"), "it says why: "
+                + edt(() -> window.status().message()));
+        check(edt(() -> java.util.Arrays.stream(Window.getWindows()).noneMatch(w -> w instanceof JDialog && w.isShowing())),
+                "no Merge/Replace question is asked");
         check(edt(() -> window.current().editor().network().equals(edited)), "a refused merge changes nothing");
         check(edt(() -> scene.bounds(JUDGE)).equals(judgePlace), "a refused merge moves nothing");
         check(java.util.Objects.equals(edt(() -> window.current().editor().undoLabel()), undoBefore), "a refusal is not a step");
@@ -167,6 +170,32 @@ public final class EditorRoundTripScenario {
         key(KeyEvent.VK_Z, InputEvent.CTRL_DOWN_MASK);
         waitFor("merge undone", () -> window.current().editor().network().node(TOO_STEEP) != null);
         check(edt(() -> window.current().editor().network().equals(edited)), "undoing the merge gives the edited network back");
+
+        // Add a Data and a Relation (Edit menu), select the Data then Ctrl-click the Relation, Ctrl-K: a Reader.
+        NodeRef speed = new NodeRef("main", "speed target");
+        NodeRef planner = new NodeRef("main", "speed planner");
+        addNode("Add Data…", speed.node());
+        waitFor("the Data added and selected", () -> window.current().editor().network().node(speed) != null
+                && scene.selection().equals(java.util.Set.of(speed)));
+        addNode("Add Relation…", planner.node());
+        waitFor("the Relation added and selected", () -> window.current().editor().network().node(planner) != null
+                && scene.selection().equals(java.util.Set.of(planner)));
+        check(edt(() -> window.current().editor().network().node(speed).kind() == org.fdnet.netinfo.NodeKind.DATA
+                && window.current().editor().network().node(planner).kind() == org.fdnet.netinfo.NodeKind.RELATION),
+                "a Data and a Relation");
+        key(KeyEvent.VK_0, InputEvent.CTRL_DOWN_MASK);
+        click(speed, 0);
+        click(planner, InputEvent.CTRL_DOWN_MASK);
+        waitFor("both new nodes selected", () -> scene.selection().size() == 2);
+        key(KeyEvent.VK_K, InputEvent.CTRL_DOWN_MASK);
+        waitFor("Ctrl-K connected them with a Reader", () -> window.current().editor().network().connectionsOf(speed).stream()
+                .anyMatch(c -> c.connection().kind() == org.fdnet.netinfo.ConnectionKind.READER
+                        && c.connection().relation().equals(planner)));
+        check(edt(() -> scene.selectedConnection() != null), "the new Reader is selected on the drawing");
+        for (int i = 0; i < 3; i++) {
+            key(KeyEvent.VK_Z, InputEvent.CTRL_DOWN_MASK);
+        }
+        waitFor("connect, add Relation and add Data undone", () -> window.current().editor().network().equals(edited));
 
         // The title marks unsaved edits; Ctrl-N asks first, and Cancel keeps everything.
         check(edt(() -> window.getTitle().startsWith("*")), "the title marks unsaved edits: " + edt(window::getTitle));
@@ -192,6 +221,27 @@ public final class EditorRoundTripScenario {
     }
 
     // ---------------------------------------------------------------- driving
+
+    /** Edit → {@code item} (Add Data… / Add Relation…): names the new node in main and presses OK. */
+    private void addNode(String item, String name) throws Exception {
+        javax.swing.JMenuItem menuItem = edt(() -> {
+            javax.swing.JMenu edit = find(window.getJMenuBar(), javax.swing.JMenu.class, "menu.edit");
+            for (int i = 0; i < edit.getItemCount(); i++) {
+                if (edit.getItem(i) != null && item.equals(edit.getItem(i).getText())) {
+                    return edit.getItem(i);
+                }
+            }
+            throw new AssertionError("no Edit menu item " + item);
+        });
+        SwingUtilities.invokeLater(menuItem::doClick); // its dialog is modal: do not wait for it here
+        JDialog form = dialog();
+        SwingUtilities.invokeAndWait(() -> {
+            find(form, javax.swing.JComboBox.class, null).setSelectedItem("main");
+            fieldAfter(form, "Name").setText(name);
+            find(form, AbstractButton.class, "OK").doClick();
+        });
+        waitFor("the form closed", () -> !form.isShowing());
+    }
 
     /** The modal dialog now showing. */
     private JDialog dialog() throws Exception {

@@ -38,6 +38,12 @@ class EditorWindowGuiTest {
         assertThat(output).contains("SCENARIO PASSED");
     }
 
+    @Test
+    void shouldShowEveryJapaneseNameOfAnEucJpNetworkInALegibleFont(RealDisplay display, @TempDir Path dir) throws Exception {
+        String output = runScenario(display.java(JapaneseNamesScenario.class, NETWORKS.resolve("arms-ja.fdn").toString()), dir);
+        assertThat(output).contains("SCENARIO PASSED");
+    }
+
     static String runScenario(ProcessBuilder pb, Path dir) throws IOException, InterruptedException {
         Path log = dir.resolve("scenario.log");
         Process p = pb.redirectErrorStream(true).redirectOutput(log.toFile()).start();

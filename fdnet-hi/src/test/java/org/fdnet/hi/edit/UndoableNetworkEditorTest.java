@@ -95,6 +95,18 @@ class UndoableNetworkEditorTest {
     }
 
     @Test
+    void shouldUndoRenamingTheNetworkAndRefuseAnEmptyName() {
+        assertUndoable(e -> e.renameNetwork("ロボット motion"));
+        editor.redo();
+        assertThat(network.name()).isEqualTo("ロボット motion");
+        assertThat(new String(NetworkRepository.toBytes(network, null), java.nio.charset.StandardCharsets.UTF_8))
+                .contains("<cnet name=\"ロボット motion\"");
+        assertThat(editor.renameNetwork(" ").accepted()).isFalse();
+        assertThat(refusals).containsExactly("network name may not be empty");
+        assertThat(network.name()).isEqualTo("ロボット motion");
+    }
+
+    @Test
     void shouldUndoChangingLoadAtStart() {
         assertUndoable(e -> e.setLoadAtStart("Walk", false));
     }

@@ -46,6 +46,11 @@ public final class PlainNetworkEditor implements NetworkEditor {
     }
 
     @Override
+    public EditResult renameNetwork(String newName) {
+        return run(() -> network.setName(newName));
+    }
+
+    @Override
     public EditResult addModule(String module, boolean loadAtStart) {
         return run(() -> network.addModule(module, loadAtStart));
     }

@@ -33,7 +33,7 @@ class TextFramesDisplayTest {
             String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
             assertThat(out).as(out).contains("STEP existing name loads node and Update",
                     "STEP connection fields offer only existing nodes", "STEP deleting a node deletes its connections",
-                    "STEP frames refresh on changes from elsewhere",
+                    "STEP frames refresh on changes from elsewhere", "STEP network renamed from the Network frame",
                     "STEP rename to a used name asks merge or replace", "STEP all passed");
             assertThat(p.exitValue()).as(out).isZero();
         } finally {

@@ -177,6 +177,17 @@ public final class TextFramesScenario {
         onEdt(() -> FrameScreenshot.write(networkFrame, shots.resolve("text-network.png")));
         step("module added from the Network frame");
 
+        // Network frame: type a new network name and press Rename
+        onEdt(() -> networkFrame.networkName.setText(""));
+        type(networkFrame.networkName, "rover");
+        onEdt(() -> {
+            networkFrame.rename.doClick();
+            check("rover".equals(network.name()), "network renamed: " + networkFrame.status.getText());
+            check(networkFrame.status.getText().equals("renamed the network to rover"), "the frame says so");
+            check(networkFrame.networkName.getText().equals("rover"), "the frame shows the new name");
+        });
+        step("network renamed from the Network frame");
+
         // Basic module frame: rename the module; delete a connection
         onEdt(() -> basic.dispose());
         AtomicReference<BasicModuleFrame> arm = new AtomicReference<>();

@@ -327,6 +327,24 @@ public final class EventCache {
     public record CachedAnswer(List<CachedEvent> events, boolean complete) {
     }
 
+    /**
+     * Every event of one node the cache holds now, monitored or not, written or not, in time order (the
+     * panel's cache browser).
+     */
+    public List<CacheEntry> entriesOf(int sourceId) {
+        List<CachedEvent> held = cachedHistory(sourceId, Long.MIN_VALUE, Long.MAX_VALUE, false).events();
+        List<CacheEntry> out = new ArrayList<>(held.size());
+        lock.lock(); // committed and pendingMonitors are guarded by the cache's lock
+        try {
+            for (CachedEvent e : held) {
+                out.add(new CacheEntry(e.event(), e.committed(), e.pendingMonitors > 0));
+            }
+        } finally {
+            lock.unlock();
+        }
+        return out;
+    }
+
     public CacheStatus status() {
         lock.lock();
         try {

@@ -1,5 +1,8 @@
 package org.fdnet.logger.cli;
 
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
@@ -14,10 +17,12 @@ import picocli.CommandLine.Option;
 
 /**
  * {@code fdnet logger}: starts the network state logger (embedded PostgreSQL unless {@code --db}) and
- * prints a status line every few seconds; {@code --gui} opens the configuration panel instead.
+ * prints a status line every few seconds, and reads commands on standard input ({@link LoggerPrompt}:
+ * {@code retry}, {@code status}, {@code help}); {@code --gui} opens the configuration panel instead.
  */
 @Command(name = "logger", mixinStandardHelpOptions = true,
-        description = "Start the network state logger: cores connect to the receiver port, viewers to the sender port.")
+        description = {"Start the network state logger: cores connect to the receiver port, viewers to the sender port.",
+                "Headless, it reads commands on standard input: retry (try a database reported DOWN again), status, help."})
 public final class LoggerCommand implements Callable<Integer> {
     @Option(names = "--db", paramLabel = "URL", description = "external database jdbc:postgresql://HOST:PORT/DB "
             + "(default: embedded PostgreSQL in ~/.fdnet/logger-db)")
@@ -104,10 +109,17 @@ public final class LoggerCommand implements Callable<Integer> {
             System.out.println("fdnet logger: told to retry the database");
             logger.retryDatabase();
         });
-        System.out.printf("fdnet logger: cores -> 127.0.0.1:%d, viewers -> 127.0.0.1:%d (Ctrl-C stops; kill -HUP "
-                + ProcessHandle.current().pid() + " retries a database reported DOWN)%n",
-                logger.receiverPort(), logger.senderPort());
+        System.out.printf("fdnet logger: cores -> 127.0.0.1:%d, viewers -> 127.0.0.1:%d (Ctrl-C stops; type retry, or"
+                + " kill -HUP " + ProcessHandle.current().pid() + ", to retry a database reported DOWN; help lists the"
+                + " commands)%n", logger.receiverPort(), logger.senderPort());
         System.out.flush();
+        // A logger started in the background of an interactive shell must not be stopped (SIGTTIN) for reading
+        // its terminal: with TTIN ignored the read fails instead, and only the prompt ends.
+        sun.misc.Signal.handle(new sun.misc.Signal("TTIN"), sun.misc.SignalHandler.SIG_IGN);
+        Thread prompt = new Thread(new LoggerPrompt(logger, new BufferedReader(new InputStreamReader(System.in,
+                StandardCharsets.UTF_8)), System.out), "fdnet-logger-prompt");
+        prompt.setDaemon(true);
+        prompt.start();
         while (logger.running()) {
             Thread.sleep(statusSeconds * 1000L);
             LoggerStatus s = logger.status();

@@ -26,12 +26,13 @@ import org.slf4j.LoggerFactory;
 
 /**
  * The logger's configuration panel (thesis, chapter 4 VIII): one tab per panel of parameters — database,
- * writer, receiver (with its clients), sender (with its clients), memory and priority — Start and Stop,
- * and the live status: cache used/free, events per second in and out, database state and lag.
+ * writer, receiver (with its clients), sender (with its clients), memory and priority — plus the cache
+ * browser ({@link CacheBrowser}); Start, Stop and <em>Retry database</em> (enabled once the writer reported
+ * the database DOWN), and the live status: cache used/free, events per second in and out, database state and lag.
  * Start validates every field (the first bad one is shown with its precise message), saves the file the
  * panel was opened with, seals the configuration and starts the logger off the event thread.
  *
- * <p>Component names (for tests): {@code start}, {@code stop}, {@code status}, {@code message}, and each
+ * <p>Component names (for tests): {@code start}, {@code stop}, {@code retry}, {@code status}, {@code message}, and each
  * field is named by its setting's key.
  */
 public final class LoggerPanel extends JPanel {
@@ -43,6 +44,7 @@ public final class LoggerPanel extends JPanel {
     private final ClientTableModel viewers = new ClientTableModel();
     private final JButton start = new JButton("Start");
     private final JButton stop = new JButton("Stop");
+    private final JButton retry = new JButton("Retry database");
     private final JLabel cacheLabel = new JLabel("cache: -");
     private final JLabel rateLabel = new JLabel("events/s: -");
     private final JLabel databaseLabel = new JLabel("database: -");
@@ -74,10 +76,21 @@ public final class LoggerPanel extends JPanel {
                 pane.addTab(p.title(), tab);
             }
         }
+        CacheBrowser browser = new CacheBrowser(() -> logger);
+        pane.addTab("Cache", browser);
+        pane.addChangeListener(e -> {
+            if (pane.getSelectedComponent() == browser) {
+                browser.refresh();
+            }
+        });
         add(pane, BorderLayout.CENTER);
         add(southPanel(), BorderLayout.SOUTH);
         start.setName("start");
         stop.setName("stop");
+        retry.setName("retry");
+        retry.setToolTipText("after the writer reported the database DOWN (its reconnection attempts used up): try again");
+        retry.setEnabled(false);
+        retry.addActionListener(e -> retryDatabase());
         status.setName("status");
         cacheLabel.setName("cache");
         rateLabel.setName("rates");
@@ -101,6 +114,7 @@ public final class LoggerPanel extends JPanel {
         buttons.add(message);
         buttons.add(start);
         buttons.add(stop);
+        buttons.add(retry);
         JPanel south = new JPanel(new BorderLayout());
         south.add(statusPanel, BorderLayout.CENTER);
         south.add(buttons, BorderLayout.SOUTH);
@@ -182,13 +196,24 @@ public final class LoggerPanel extends JPanel {
         }.execute();
     }
 
+    private void retryDatabase() {
+        NetworkStateLogger running = logger;
+        if (running != null) {
+            running.retryDatabase();
+            retry.setEnabled(false);
+            message.setText("retrying the database…");
+        }
+    }
+
     private void showStatus() {
         NetworkStateLogger l = logger;
         LoggerStatus s = l == null ? null : l.status();
         if (s == null || !s.running()) {
             status.setText("stopped");
+            retry.setEnabled(false);
             return;
         }
+        retry.setEnabled(s.database().startsWith("DOWN"));
         status.setText(String.format("running — cores on %s:%d, viewers on %s:%d", config.receiverAddress(),
                 l.receiverPort(), config.senderAddress(), l.senderPort()));
         cacheLabel.setText(String.format("cache: used %,d KiB, free %,d KiB (%.1f %%)%s, %,d events held, %,d monitored",

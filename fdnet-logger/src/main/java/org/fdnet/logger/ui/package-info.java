@@ -4,10 +4,13 @@
  * <pre>
  *   LoggerFrame ─▶ LoggerPanel ─┬─ SettingsTab × 5 (database, writer, receiver, sender, memory &amp; priority)
  *                               ├─ ClientTableModel × 2 (address, port, name, state, frames, end reason)
- *                               └─ Start/Stop ─SwingWorker─▶ NetworkStateLogger; Timer(500 ms) ─status()─▶ labels
+ *                               ├─ CacheBrowser: pick a Data ─cache().entriesOf(id)─▶ CacheEntryTableModel
+ *                               └─ Start/Stop/Retry database ─SwingWorker─▶ NetworkStateLogger;
+ *                                  Timer(500 ms) ─status()─▶ labels
  * </pre>
  *
- * Component names tests use: {@code start}, {@code stop}, {@code status}, {@code message}, {@code cache},
- * {@code rates}, {@code database}, {@code tabs}, {@code cores}, {@code viewers}, and each field by its setting's key.
+ * Component names tests use: {@code start}, {@code stop}, {@code retry}, {@code status}, {@code message},
+ * {@code cache}, {@code rates}, {@code database}, {@code tabs}, {@code cores}, {@code viewers}, {@code cacheNode},
+ * {@code cacheRefresh}, {@code cacheEvents}, {@code cacheSummary}, and each field by its setting's key.
  */
 package org.fdnet.logger.ui;

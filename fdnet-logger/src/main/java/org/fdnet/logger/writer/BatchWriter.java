@@ -40,9 +40,10 @@ import org.slf4j.LoggerFactory;
  * (fewer ready while one is in flight) the in-flight batch commits first, so the thesis's batch size and
  * timer keep their meaning.
  *
- * <p>Database lost: the same batch is retried every {@code reconnectDelayMillis}; after
- * {@code reconnectAttempts} failed attempts (the thesis panel's "number of attempts") it reports the database
- * DOWN and stops retrying until told to ({@link #retryDatabase()}) — nothing is dropped meanwhile: the cache
+ * <p>Database lost: the same batch is retried every {@code reconnectDelayMillis}, each retry on a fresh
+ * connection; after {@code reconnectAttempts} failed reconnections (the thesis panel's "number of attempts":
+ * N attempts are N reconnections, the failed write that lost the database is not one of them) it reports the
+ * database DOWN and stops retrying until told to ({@link #retryDatabase()}) — nothing is dropped meanwhile: the cache
  * keeps accepting until its critical level, then the receivers push back on the cores, whose caches and
  * journals keep everything not acknowledged. With {@code reconnect=false} the writer gives up at the first
  * loss and stops the logger (the cores still hold every unacknowledged event).
@@ -65,6 +66,7 @@ public final class BatchWriter implements Runnable {
     private volatile long overlappedBatches;
     private volatile long overlappedRows;
     private volatile long rolledBackBehind;
+    private volatile long reconnectionAttempts;
     private final LongAdder laneBusyNanos = new LongAdder();
     private volatile int lastBatchRows;
     private volatile BatchObserver observer;
@@ -177,6 +179,11 @@ public final class BatchWriter implements Runnable {
         synchronized (retrySignal) {
             retrySignal.notifyAll();
         }
+    }
+
+    /** Attempts to reach the database again after a failed write (each one after {@code reconnectDelayMillis}). */
+    public long reconnectionAttempts() {
+        return reconnectionAttempts;
     }
 
     /** Tells a writer that reported the database down to try again (another round of attempts). */
@@ -382,10 +389,14 @@ public final class BatchWriter implements Runnable {
         }
     }
 
+    /** Raises (critical level) or lowers (normal level) every thread that writes: this one and each lane's. */
     private void priority(boolean high) {
         int wanted = settings.priorityEnabled() && high ? Thread.MAX_PRIORITY : Thread.NORM_PRIORITY;
         if (Thread.currentThread().getPriority() != wanted) {
             Thread.currentThread().setPriority(wanted);
+        }
+        for (WriterLane lane : lanes) {
+            lane.priority(wanted);
         }
     }
 
@@ -401,6 +412,9 @@ public final class BatchWriter implements Runnable {
         SQLException failure = alreadyFailed;
         while (true) {
             if (failure == null) {
+                if (failures > 0) {
+                    reconnectionAttempts++;
+                }
                 try {
                     if (failures > 0 && store.wasCommitted(batch)) {
                         LOG.info("the batch whose commit failed was committed after all; not writing it again");
@@ -409,8 +423,8 @@ public final class BatchWriter implements Runnable {
                     }
                     committed(batch, mappings);
                     if (failures > 0) {
-                        LOG.warn("database back after {} failed attempts ({} s); writing resumes",
-                                failures, (System.currentTimeMillis() - downSince) / 1000);
+                        LOG.warn("database back after {} failed reconnection attempts ({} s); writing resumes",
+                                failures - 1, (System.currentTimeMillis() - downSince) / 1000);
                     }
                     return true;
                 } catch (SQLException e) {
@@ -423,7 +437,9 @@ public final class BatchWriter implements Runnable {
             if (failures == 1) {
                 downSince = System.currentTimeMillis();
             }
-            databaseState = "lost since " + Instant.ofEpochMilli(downSince) + ", " + failures + " attempts";
+            int reconnections = failures - 1; // the first failure lost the database; every later one was a retry
+            databaseState = "lost since " + Instant.ofEpochMilli(downSince) + ", " + reconnections
+                    + " reconnection attempts";
             if (!settings.reconnect()) {
                 LOG.error("database {} lost ({}); writer.reconnect=false: stopping the logger. The cores keep their"
                         + " {} unacknowledged events and send them to the next logger.", store.target(), e.getMessage(),
@@ -435,17 +451,17 @@ public final class BatchWriter implements Runnable {
                 LOG.warn("database write failed ({}); holding {} events, retrying every {} ms", e.getMessage(),
                         cache.unwrittenCount() + batch.size(), settings.reconnectDelayMillis());
             }
-            if (failures % settings.reconnectAttempts() == 0) {
-                databaseState = "DOWN since " + Instant.ofEpochMilli(downSince) + ", " + failures
-                        + " attempts; not retrying until told to";
-                LOG.error("DATABASE DOWN: {} failed attempts since {}; holding {} events in the cache ({}); not"
-                                + " retrying until told to; receivers pause at the critical level and the cores"
-                                + " keep the rest — nothing is dropped", failures, Instant.ofEpochMilli(downSince),
+            if (reconnections > 0 && reconnections % settings.reconnectAttempts() == 0) {
+                databaseState = "DOWN since " + Instant.ofEpochMilli(downSince) + ", " + reconnections
+                        + " reconnection attempts; not retrying until told to";
+                LOG.error("DATABASE DOWN: {} failed reconnection attempts since {}; holding {} events in the cache ({});"
+                                + " not retrying until told to; receivers pause at the critical level and the cores"
+                                + " keep the rest — nothing is dropped", reconnections, Instant.ofEpochMilli(downSince),
                         cache.unwrittenCount() + batch.size(), e.getMessage());
                 if (!awaitRetryRequest()) {
                     return false;
                 }
-                LOG.warn("told to retry the database {}: {} more attempts", store.target(),
+                LOG.warn("told to retry the database {}: {} more reconnection attempts", store.target(),
                         settings.reconnectAttempts());
                 continue;
             }

@@ -33,14 +33,30 @@ final class WriterLane implements AutoCloseable {
     private final EventStore store;
     private final ExecutorService thread;
     private Connection connection; // used on the lane's thread only
+    private volatile Thread worker;
+    private volatile int priority = Thread.NORM_PRIORITY;
 
     WriterLane(EventStore store, String name) {
         this.store = store;
         this.thread = Executors.newSingleThreadExecutor(r -> {
             Thread t = new Thread(r, name);
             t.setDaemon(true);
+            t.setPriority(priority);
+            worker = t;
             return t;
         });
+    }
+
+    /**
+     * Sets the priority of the lane's thread, which sorts, COPYs and COMMITs the batches (the thesis's writer
+     * priority must land here, not only on the thread that hands batches out).
+     */
+    void priority(int wanted) {
+        priority = wanted;
+        Thread t = worker;
+        if (t != null && t.getPriority() != wanted) {
+            t.setPriority(wanted);
+        }
     }
 
     /** Opens the connection now (completes exceptionally when the database cannot be reached). */

@@ -126,7 +126,7 @@ public final class ConfigPanelScenario {
         throw new AssertionError("timed out waiting for: " + what);
     }
 
-    private static <T> T onEdt(Callable<T> c) throws Exception {
+    static <T> T onEdt(Callable<T> c) throws Exception {
         AtomicReference<T> result = new AtomicReference<>();
         AtomicReference<Exception> failure = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> {

@@ -52,7 +52,7 @@ class PipelinedWriterTest {
             logger.start();
             EventCache cache = logger.cache();
             RunProgress run = logger.directory().openRun(UUID.randomUUID(), "pipeline-core");
-            int[] ids = ids(logger.directory(), run, 20);
+            int[] ids = WriterTestEvents.ids(logger.directory(), run, 20);
             List<long[]> committedRanges = new ArrayList<>();
             List<Long> acksAtCommit = new ArrayList<>();
             logger.writer().observe(batch -> {
@@ -84,7 +84,7 @@ class PipelinedWriterTest {
             logger.start();
             EventCache cache = logger.cache();
             RunProgress run = logger.directory().openRun(UUID.randomUUID(), "failing-core");
-            int[] ids = ids(logger.directory(), run, 20);
+            int[] ids = WriterTestEvents.ids(logger.directory(), run, 20);
             cache.add(WriterTestEvents.events(cache, run, ids, 0, 1000));
             WriterTestEvents.awaitCommitted(cache, 1000);
             int total = 1000;
@@ -122,7 +122,7 @@ class PipelinedWriterTest {
             store.createSchema();
             SourceDirectory directory = new SourceDirectory(store);
             RunProgress run = directory.openRun(UUID.randomUUID(), "hazard-core");
-            int[] ids = ids(directory, run, 2);
+            int[] ids = WriterTestEvents.ids(directory, run, 2);
             List<NodeMapping> mappings = directory.unsavedMappings();
             try (Connection c = store.openWriterConnection()) {
                 store.writeBatch(c, named(run, ids[0], "First", 1, 1_000), mappings);
@@ -199,7 +199,7 @@ class PipelinedWriterTest {
             logger.start();
             EventCache cache = logger.cache();
             RunProgress run = logger.directory().openRun(UUID.randomUUID(), "single-core");
-            int[] ids = ids(logger.directory(), run, 10);
+            int[] ids = WriterTestEvents.ids(logger.directory(), run, 10);
             List<long[]> ranges = new ArrayList<>();
             logger.writer().observe(batch -> ranges.add(seqRange(batch)));
             cache.add(WriterTestEvents.events(cache, run, ids, 0, 30_000));
@@ -236,14 +236,6 @@ class PipelinedWriterTest {
         DataValueEvent value = new DataValueEvent(id, time + 1, ValueType.DOUBLE, "2.5");
         return List.of(new CachedEvent(name, run, seq, 100, System.nanoTime()),
                 new CachedEvent(value, run, seq, 100, System.nanoTime()));
-    }
-
-    private static int[] ids(SourceDirectory directory, RunProgress run, int n) throws SQLException {
-        int[] ids = new int[n];
-        for (int i = 0; i < n; i++) {
-            ids[i] = directory.globalId(run, i);
-        }
-        return ids;
     }
 
     private static long[] seqRange(List<CachedEvent> batch) {

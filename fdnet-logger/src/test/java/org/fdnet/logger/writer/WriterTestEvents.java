@@ -1,5 +1,6 @@
 package org.fdnet.logger.writer;
 
+import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.List;
 import org.fdnet.event.DataValueEvent;
@@ -7,6 +8,7 @@ import org.fdnet.event.ValueType;
 import org.fdnet.logger.cache.CachedEvent;
 import org.fdnet.logger.cache.EventCache;
 import org.fdnet.logger.cache.RunProgress;
+import org.fdnet.logger.store.SourceDirectory;
 
 /** The writer tests' events (Data values of the given nodes, one a microsecond) and their wait for commits. */
 final class WriterTestEvents {
@@ -21,6 +23,15 @@ final class WriterTestEvents {
             out.add(new CachedEvent(e, run, i + 1, cache.sizeOf(e), System.nanoTime()));
         }
         return out;
+    }
+
+    /** Global source ids for the run's local nodes 0..n-1. */
+    static int[] ids(SourceDirectory directory, RunProgress run, int n) throws SQLException {
+        int[] ids = new int[n];
+        for (int i = 0; i < n; i++) {
+            ids[i] = directory.globalId(run, i);
+        }
+        return ids;
     }
 
     /** Waits until the cache counts {@code count} events committed. */

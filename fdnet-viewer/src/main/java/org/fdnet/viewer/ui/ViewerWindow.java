@@ -29,6 +29,7 @@ import javax.swing.WindowConstants;
 import org.fdnet.event.wire.LoggedNode;
 import org.fdnet.viewer.data.NodeSelection;
 import org.fdnet.viewer.data.PlotData;
+import org.fdnet.viewer.legible.LegibleFont;
 import org.fdnet.viewer.source.LoggerConnection;
 import org.fdnet.viewer.source.Replay;
 import org.fdnet.viewer.source.ReplayLoader;
@@ -150,6 +151,28 @@ public final class ViewerWindow extends JFrame {
         runList.forEach(runs::addItem);
         status.setText(String.format("%d Datas in the newest run, %d runs recorded; plotting %d node(s)",
                 nodeModel.size(), runList.size(), live.trackedSources().length));
+        legibleNames(nodes);
+    }
+
+    /**
+     * The list and the plots draw the nodes' names in a font that has their characters (Japanese names too);
+     * when no installed font has them, the status bar says so, naming the package to install.
+     */
+    private void legibleNames(List<LoggedNode> nodes) {
+        List<String> names = new ArrayList<>();
+        nodes.forEach(n -> names.add(LoggerConnection.label(n)));
+        LegibleFont.Choice c = LegibleFont.forNames(nodeList.getFont(), names);
+        nodeList.setFont(c.font());
+        livePlot.setFont(c.font());
+        replayPlot.setFont(c.font());
+        if (!c.legible()) {
+            status.setText(c.warning());
+        }
+    }
+
+    /** The font the node list shows names in (tests: every name displayable). */
+    public java.awt.Font namesFont() {
+        return nodeList.getFont();
     }
 
     private JPanel toolBar() {
@@ -190,6 +213,7 @@ public final class ViewerWindow extends JFrame {
         p.add(new JLabel("Logger's Data nodes (newest run)"), BorderLayout.NORTH);
         nodeList.setCellRenderer((list, value, index, selected, focus) -> {
             JLabel l = new JLabel(LoggerConnection.label(value) + (live.tracks(value.sourceId()) ? "  ●" : ""));
+            l.setFont(list.getFont());
             l.setOpaque(true);
             l.setBorder(BorderFactory.createEmptyBorder(1, 4, 1, 4));
             l.setBackground(selected ? list.getSelectionBackground() : list.getBackground());

@@ -33,7 +33,7 @@ public final class ViewerScenario {
             AtomicBoolean writing = new AtomicBoolean(true);
             LoggerClient client = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(), "scenario"));
             EventClock clock = new EventClock();
-            String[] names = {"pitch", "roll", "stability margin"};
+            String[] names = {"pitch", "roll", "stability margin", "姿勢"}; // the last: a Japanese name, no values
             for (int n = 0; n < names.length; n++) {
                 client.accept(new NodeNamedEvent(n, clock.next(), NodeKind.DATA, new NodeRef("Pose", names[n])));
             }
@@ -59,6 +59,9 @@ public final class ViewerScenario {
             wait(() -> w.livePlot().data().acceptedEvents() > 100 && w.livePlot().frames() > 5, "live values drawn");
             System.out.println("STEP live values drawn: " + w.livePlot().data().acceptedEvents() + " values, "
                     + w.livePlot().data().series().size() + " series");
+            wait(() -> w.namesFont().canDisplayUpTo("Pose/姿勢") == -1 && !w.statusText().contains("cannot be shown"),
+                    "the node list's font displays the Japanese name");
+            System.out.println("STEP Japanese name legible in " + w.namesFont().getFamily());
             SwingUtilities.invokeAndWait(() -> {
                 w.livePlot().setPaused(true);
                 w.livePlot().zoom(0.5);

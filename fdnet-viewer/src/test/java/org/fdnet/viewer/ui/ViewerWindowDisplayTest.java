@@ -32,7 +32,7 @@ class ViewerWindowDisplayTest {
             boolean done = p.waitFor(200, TimeUnit.SECONDS);
             String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
             assertThat(done).as(out).isTrue();
-            assertThat(out).as(out).contains("STEP live values drawn", "STEP paused and zoomed", "STEP replay",
+            assertThat(out).as(out).contains("STEP live values drawn", "STEP Japanese name legible", "STEP paused and zoomed", "STEP replay",
                     "STEP command screenshot", "STEP unknown node refused", "STEP all passed");
             assertThat(p.exitValue()).as(out).isZero();
         } finally {

@@ -13,6 +13,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import java.util.Locale;
 import javax.imageio.ImageIO;
 import javax.swing.BorderFactory;
@@ -21,6 +22,7 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import org.fdnet.roq.sim.Heightfield;
 import org.fdnet.roq.sim.SensorSnapshot;
+import org.fdnet.viewer.legible.LegibleFont;
 
 /**
  * The content of the demo window: the robot and its course drawn by a {@link RoqPainter} (with the path so far)
@@ -43,6 +45,7 @@ public final class RoqDemoPanel extends JPanel {
     private final JLabel probing = figure();
     private final JLabel events = figure();
     private final JLabel loop = figure();
+    private final JLabel title = new JLabel(" ");
 
     public RoqDemoPanel(Heightfield terrain) {
         super(new BorderLayout());
@@ -55,7 +58,25 @@ public final class RoqDemoPanel extends JPanel {
             figures.add(l);
         }
         add(figures, BorderLayout.SOUTH);
+        title.setName("title");
+        title.setBorder(BorderFactory.createEmptyBorder(4, 10, 2, 10));
+        add(title, BorderLayout.NORTH);
         show(null, DemoFigures.none());
+    }
+
+    /**
+     * Shows what runs (the network's and course's names) above the robot, in a font that has the names'
+     * characters; when no installed font has them, that line says so once, naming the package to install.
+     */
+    public void title(String text) {
+        LegibleFont.Choice c = LegibleFont.forNames(title.getFont(), List.of(text));
+        title.setFont(c.font());
+        title.setText(c.legible() ? text : text + " — " + c.warning());
+    }
+
+    /** The header line (tests: the names legible). */
+    public JLabel titleLabel() {
+        return title;
     }
 
     private static JLabel figure() {

@@ -27,6 +27,7 @@ public final class RoqDemoWindow {
             SwingUtilities.invokeAndWait(() -> {
                 FlatLightLaf.setup();
                 RoqDemoPanel panel = new RoqDemoPanel(terrain);
+                panel.title(title);
                 JFrame frame = new JFrame(title);
                 frame.setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
                 frame.setContentPane(panel);

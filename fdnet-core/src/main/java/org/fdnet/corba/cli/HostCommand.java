@@ -46,6 +46,7 @@ public final class HostCommand implements Callable<Integer> {
         HostProcess host;
         RuntimeLocalNetwork engine = LocalNetworks.forHost(name, allowedPaths);
         try {
+            naming.secure("this host");
             if (logger != null) {
                 engine.useLogger(logger);
             }

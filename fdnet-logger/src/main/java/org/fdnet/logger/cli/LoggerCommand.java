@@ -9,7 +9,9 @@ import org.fdnet.logger.config.LoggerConfig;
 import org.fdnet.logger.config.LoggerConfigFile;
 import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.logger.ui.LoggerFrame;
+import org.fdnet.tls.TlsOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -31,6 +33,14 @@ public final class LoggerCommand implements Callable<Integer> {
 
     @Option(names = "--sender-port", paramLabel = "P", description = "port for viewers (default 5556)")
     Integer senderPort;
+
+    @Option(names = "--bind", paramLabel = "ADDR",
+            description = "address both ports listen on (default 127.0.0.1, or the configuration file's); another"
+                    + " address needs --tls or --insecure")
+    String bind;
+
+    @Mixin
+    TlsOptions tls;
 
     @Option(names = "--config", paramLabel = "FILE", description = "configuration file (default ~/.fdnet/logger.properties)")
     Path configFile;
@@ -64,8 +74,16 @@ public final class LoggerCommand implements Callable<Integer> {
             if (senderPort != null) {
                 config.set(LoggerSetting.SENDER_PORT, senderPort.toString());
             }
+            if (bind != null) {
+                config.set(LoggerSetting.RECEIVER_ADDRESS, bind).set(LoggerSetting.SENDER_ADDRESS, bind);
+            }
             config.validate();
-        } catch (IllegalArgumentException e) {
+            if (screenshot == null) {
+                tls.apply();
+                tls.requireSafeBind("the logger's receiver port (cores)", config.receiverAddress());
+                tls.requireSafeBind("the logger's viewer port", config.senderAddress());
+            }
+        } catch (IllegalArgumentException | IllegalStateException e) {
             System.err.println("fdnet logger: " + e.getMessage());
             return 2;
         }
@@ -104,9 +122,10 @@ public final class LoggerCommand implements Callable<Integer> {
             System.out.println("fdnet logger: told to retry the database");
             logger.retryDatabase();
         });
-        System.out.printf("fdnet logger: cores -> 127.0.0.1:%d, viewers -> 127.0.0.1:%d (Ctrl-C stops; kill -HUP "
+        System.out.printf("fdnet logger: cores -> %s:%d, viewers -> %s:%d%s (Ctrl-C stops; kill -HUP "
                 + ProcessHandle.current().pid() + " retries a database reported DOWN)%n",
-                logger.receiverPort(), logger.senderPort());
+                config.receiverAddress(), logger.receiverPort(), config.senderAddress(), logger.senderPort(),
+                tls.tls() ? ", mutual TLS" : "");
         System.out.flush();
         while (logger.running()) {
             Thread.sleep(statusSeconds * 1000L);

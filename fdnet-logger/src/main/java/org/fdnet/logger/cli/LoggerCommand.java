@@ -12,7 +12,9 @@ import org.fdnet.logger.ui.LoggerFrame;
 import org.fdnet.tls.TlsOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code fdnet logger}: starts the network state logger (embedded PostgreSQL unless {@code --db}) and
@@ -41,6 +43,9 @@ public final class LoggerCommand implements Callable<Integer> {
 
     @Mixin
     TlsOptions tls;
+
+    @Spec
+    CommandSpec spec;
 
     @Option(names = "--config", paramLabel = "FILE", description = "configuration file (default ~/.fdnet/logger.properties)")
     Path configFile;
@@ -84,7 +89,8 @@ public final class LoggerCommand implements Callable<Integer> {
                 tls.requireSafeBind("the logger's viewer port", config.senderAddress());
             }
         } catch (IllegalArgumentException | IllegalStateException e) {
-            System.err.println("fdnet logger: " + e.getMessage());
+            spec.commandLine().getErr().println("fdnet logger: " + e.getMessage());
+            spec.commandLine().getErr().flush();
             return 2;
         }
         if (screenshot != null) {

@@ -10,21 +10,19 @@ import java.util.List;
  * network the processes under test belong to, and a foreign one whose certificates they must refuse.
  */
 public final class TestKeys {
-    private static final List<String> NETWORK = List.of("naming", "flyer", "logger", "tester");
-    private static final List<String> FOREIGN = List.of("intruder");
     private static final Path ROOT = Path.of("target", "test-tls").toAbsolutePath();
 
     private TestKeys() {
     }
 
-    /** {@code NAME.p12} of the network under test (naming, flyer, logger, tester). */
+    /** {@code NAME.p12} of the network under test, made when first asked for. */
     public static synchronized Path network(String name) {
-        return make("network", NETWORK).store(name);
+        return make("network", List.of(name)).store(name);
     }
 
     /** A certificate of another network (its own CA): {@code intruder}. */
     public static synchronized Path foreign() {
-        return make("foreign", FOREIGN).store("intruder");
+        return make("foreign", List.of("intruder")).store("intruder");
     }
 
     private static KeyMaker make(String folder, List<String> names) {

@@ -77,9 +77,15 @@ public final class SoakCommand implements Callable<Integer> {
                 duration.toSeconds(), network.getFileName(), HOSTS, work);
         out.flush();
         try (SoakCluster cluster = new SoakCluster(work)) {
-            cluster.start(HOSTS, linkSwitch.toString());
             long fromMicros = System.currentTimeMillis() * 1_000;
-            FdnetChildProcess run = cluster.startRun(network, duration.toSeconds() + 600, HOSTS.size() + 1);
+            FdnetChildProcess run;
+            try {
+                cluster.start(HOSTS, linkSwitch.toString());
+                run = cluster.startRun(network, duration.toSeconds() + 600, HOSTS.size() + 1);
+            } catch (IllegalStateException | IOException e) {
+                err.println("fdnet soak: cannot start the soak's processes: " + e.getMessage());
+                return 1;
+            }
             SoakDatabase database = new SoakDatabase(cluster.databaseTarget(), fromMicros);
             SequenceWriter writer = new SequenceWriter(run, VALUE_PERIOD_MILLIS);
             DeliveryWatch watch = new DeliveryWatch(database, ECHO, SEQ);

@@ -1,7 +1,6 @@
 package org.fdnet.corba.bench;
 
 import java.nio.file.Files;
-import java.nio.file.Path;
 import org.fdnet.tls.KeyMaker;
 import org.fdnet.tls.TlsIdentity;
 import org.fdnet.tls.TransportSecurity;
@@ -101,17 +100,19 @@ public final class CorbaBenchmark implements Runnable {
         System.out.println();
         progress("again over mutual TLS: throwaway keys for bench-a and bench-b, every ORB with --tls ...");
         try {
-            Path keys = Files.createTempDirectory("fdnet-bench-keys-");
-            KeyMaker maker = new KeyMaker(keys);
-            maker.make(List.of("bench-a", "bench-b"));
-            TransportSecurity.use(TlsIdentity.load(maker.store("bench-a")));
+            KeyMaker maker = new KeyMaker(Files.createTempDirectory("fdnet-bench-keys-"));
             Figures secure;
-            try (BenchTopology topology = BenchTopology.start(links, List.of("--tls", maker.store("bench-b").toString()));
-                 HopSampler sampler = new HopSampler(topology)) {
-                Histogram[] calls = backToBack(sampler);
-                secure = new Figures(calls[0], calls[1], sustained(topology));
+            try {
+                maker.make(List.of("bench-a", "bench-b"));
+                TransportSecurity.use(TlsIdentity.load(maker.store("bench-a")));
+                try (BenchTopology topology = BenchTopology.start(links, List.of("--tls", maker.store("bench-b").toString()));
+                     HopSampler sampler = new HopSampler(topology)) {
+                    Histogram[] calls = backToBack(sampler);
+                    secure = new Figures(calls[0], calls[1], sustained(topology));
+                }
             } finally {
                 TransportSecurity.off();
+                maker.deleteAll();
             }
             System.out.println();
             System.out.println("TLS cost (same machine, same run; TLS 1.3, EC P-256, mutual authentication):");

@@ -125,7 +125,7 @@ public final class BenchLoggerCommand implements Callable<Integer> {
                 heap.interrupt();
             }
             if (tls) {
-                new LoggerTlsCost(config, target, tlsSeconds, nodes).run(dir);
+                new LoggerTlsCost(config, target, tlsSeconds, nodes).run();
             }
             report.info("peak heap (logger JVM)", String.format("%,d MiB", peakHeap.get() >> 20));
             report.printSummary();

@@ -1,5 +1,6 @@
 package org.fdnet.logger.cli;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.sql.Connection;
 import java.sql.DriverManager;
@@ -20,11 +21,12 @@ import org.fdnet.tls.TransportSecurity;
 /**
  * {@code bench logger --tls}, phase [5]: what mutual TLS costs the logger's two ports. The same measurement twice in
  * one run, plain then TLS, each into a fresh logger on the same database: a producer process at full speed for
- * {@code seconds} (events per second, first to last commit) and 500 viewer requests (a node list: one round trip
- * each) on the viewer port.
+ * {@code seconds} (events per second, first to last commit) and 2,000 viewer requests after 1,000 to warm up (a
+ * node list: one round trip each) on the viewer port.
  */
 final class LoggerTlsCost {
-    private static final int QUERIES = 500;
+    private static final int QUERIES = 2_000;
+    private static final int WARM_UP = 1_000;
 
     private final LoggerConfig config;
     private final DatabaseTarget target;
@@ -42,18 +44,19 @@ final class LoggerTlsCost {
     private record Figures(double eventsPerSecond, Histogram query) {
     }
 
-    void run(Path work) throws Exception {
+    void run() throws Exception {
         System.out.printf("%n[5] TLS cost: a producer at full speed for %d s and %d viewer requests, plain then mutual"
                 + " TLS (a fresh logger each, same database) ...%n", seconds, QUERIES);
         Figures plain = measure("plain", null);
-        KeyMaker keys = new KeyMaker(work.resolve("tls"));
-        keys.make(List.of("bench-logger", "bench-producer"));
-        TransportSecurity.use(TlsIdentity.load(keys.store("bench-logger")));
+        KeyMaker keys = new KeyMaker(Files.createTempDirectory("fdnet-bench-keys-"));
         Figures secure;
         try {
+            keys.make(List.of("bench-logger", "bench-producer"));
+            TransportSecurity.use(TlsIdentity.load(keys.store("bench-logger")));
             secure = measure("tls", keys.store("bench-producer"));
         } finally {
             TransportSecurity.off();
+            keys.deleteAll();
         }
         System.out.printf("  %-40s %12s %12s %9s%n", "", "plain", "TLS", "TLS/plain");
         row("producer -> logger, events/s", plain.eventsPerSecond(), secure.eventsPerSecond());
@@ -82,10 +85,10 @@ final class LoggerTlsCost {
             double rate = (count() - before) / ((last.get() - first.get()) / 1e9);
             Histogram query = new Histogram(3);
             try (ViewerClient viewer = new ViewerClient("127.0.0.1", logger.senderPort(), "bench-tls-viewer", e -> { })) {
-                for (int i = 0; i < QUERIES + 50; i++) {
+                for (int i = 0; i < QUERIES + WARM_UP; i++) {
                     long t = System.nanoTime();
                     viewer.nodes("tlscost-" + module + "/Data1");
-                    if (i >= 50) {
+                    if (i >= WARM_UP) {
                         query.recordValue(System.nanoTime() - t);
                     }
                 }

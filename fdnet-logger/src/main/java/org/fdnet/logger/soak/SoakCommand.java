@@ -64,6 +64,7 @@ public final class SoakCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         FaultPlan plan;
         Path network;
+        boolean temporary = work == null;
         try {
             plan = FaultPlan.of(duration);
             work = work != null ? Files.createDirectories(work) : Files.createTempDirectory("fdnet-soak-");
@@ -76,6 +77,7 @@ public final class SoakCommand implements Callable<Integer> {
         out.printf("fdnet soak: %d s of faults on %s (hosts %s, operator, logger on PostgreSQL); work folder %s%n",
                 duration.toSeconds(), network.getFileName(), HOSTS, work);
         out.flush();
+        int result;
         try (SoakCluster cluster = new SoakCluster(work)) {
             long fromMicros = System.currentTimeMillis() * 1_000;
             FdnetChildProcess run;
@@ -120,7 +122,19 @@ public final class SoakCommand implements Callable<Integer> {
                 long storedAt = value < 0 ? -1 : watch.firstStored(value, f.atMillis());
                 healed.add(f.healed(storedAt < 0 ? -1 : storedAt - f.atMillis()));
             }
-            return report(out, t0, healed, acked, writer, watch, database);
+            result = report(out, t0, healed, acked, writer, watch, database);
+        }
+        if (result == 0 && temporary) {
+            deleteTree(work); // a passed soak's database is of no further use; a failed one's is kept to look into
+        }
+        return result;
+    }
+
+    private static void deleteTree(Path root) throws IOException {
+        try (var paths = Files.walk(root)) {
+            for (Path p : (Iterable<Path>) paths.sorted(java.util.Comparator.reverseOrder())::iterator) {
+                Files.delete(p);
+            }
         }
     }
 

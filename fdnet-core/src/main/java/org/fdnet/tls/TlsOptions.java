@@ -36,17 +36,4 @@ public final class TlsOptions {
     public boolean tls() {
         return store != null;
     }
-
-    /** The arguments that give a child process the same choice ({@code --tls FILE} / {@code --insecure}). */
-    public java.util.List<String> arguments() {
-        java.util.List<String> args = new java.util.ArrayList<>();
-        if (store != null) {
-            args.add("--tls");
-            args.add(store.toString());
-        }
-        if (insecure) {
-            args.add("--insecure");
-        }
-        return args;
-    }
 }

@@ -2,6 +2,9 @@ package org.fdnet.logger.soak;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
 
 /**
  * Injects one planned fault into the soak's processes and returns once it is over: the process is back, the database
@@ -11,9 +14,9 @@ final class FaultInjector {
     private final SoakCluster cluster;
     private static final long REGISTER_TIMEOUT_MILLIS = 30_000;
     private final Path linkSwitch;
-    private final java.util.List<String> hosts;
+    private final List<String> hosts;
 
-    FaultInjector(SoakCluster cluster, Path linkSwitch, java.util.List<String> hosts) {
+    FaultInjector(SoakCluster cluster, Path linkSwitch, List<String> hosts) {
         this.cluster = cluster;
         this.linkSwitch = linkSwitch;
         this.hosts = hosts;
@@ -38,7 +41,7 @@ final class FaultInjector {
                 cluster.startProcess(process);
             }
             case NAMING_RESTART -> {
-                java.util.Map<String, Long> before = new java.util.HashMap<>();
+                Map<String, Long> before = new HashMap<>();
                 for (String host : hosts) {
                     before.put(host, registeredAgain(host));
                 }

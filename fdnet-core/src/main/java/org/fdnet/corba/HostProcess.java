@@ -13,6 +13,7 @@ import org.slf4j.LoggerFactory;
  */
 public final class HostProcess implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(HostProcess.class);
+    private static final long REGISTRATION_CHECK_MILLIS = 1_000;
 
     private final OrbRuntime orb;
     private final HostServant servant;
@@ -20,6 +21,7 @@ public final class HostProcess implements AutoCloseable {
     private final HostDirectory directory;
     private final String name;
     private final LocalNetwork network;
+    private volatile boolean closed;
 
     private HostProcess(OrbRuntime orb, HostServant servant, Host reference, HostDirectory directory, String name,
                         LocalNetwork network) {
@@ -45,7 +47,9 @@ public final class HostProcess implements AutoCloseable {
             HostDirectory directory = HostDirectory.connect(orb);
             directory.register(name, ref);
             LOG.info("host {} registered in {}", name, directory.where());
-            return new HostProcess(orb, servant, ref, directory, name, network);
+            HostProcess host = new HostProcess(orb, servant, ref, directory, name, network);
+            host.keepRegistered();
+            return host;
         } catch (RuntimeException e) {
             orb.close();
             throw e;
@@ -54,6 +58,30 @@ public final class HostProcess implements AutoCloseable {
 
     public String name() {
         return name;
+    }
+
+    /**
+     * A restarted naming service has forgotten every binding: register again when the name is missing. A name bound
+     * to another reference belongs to a newer incarnation of this host (this one was thought dead) and is left alone.
+     */
+    private void keepRegistered() {
+        Thread watcher = new Thread(() -> {
+            while (!closed) {
+                try {
+                    Thread.sleep(REGISTRATION_CHECK_MILLIS);
+                    if (!closed && directory.find(name).isEmpty()) {
+                        directory.register(name, reference);
+                        LOG.warn("host {} registered again: the naming service had forgotten it (restarted?)", name);
+                    }
+                } catch (HostUnreachableException | org.omg.CORBA.SystemException e) {
+                    LOG.debug("host {}: naming service not reachable now: {}", name, e.toString());
+                } catch (InterruptedException e) {
+                    return;
+                }
+            }
+        }, "fdnet-host-registration");
+        watcher.setDaemon(true);
+        watcher.start();
     }
 
     public Host reference() {
@@ -70,6 +98,7 @@ public final class HostProcess implements AutoCloseable {
 
     @Override
     public void close() {
+        closed = true;
         try {
             // Only remove the binding if it is still ours: a restarted host may have rebound the name.
             directory.find(name).filter(h -> h._is_equivalent(reference)).ifPresent(h -> directory.unregister(name));

@@ -3,6 +3,7 @@ package org.fdnet.corba;
 import java.nio.file.Path;
 import java.util.Objects;
 import java.util.Properties;
+import org.fdnet.tls.TransportSecurity;
 
 /**
  * Every setting of an FDNet ORB in one typed place: the JacORB property keys live here and nowhere else.
@@ -18,6 +19,9 @@ import java.util.Properties;
  * @param callTimeoutMillis how long a two-way call may wait for its reply before it fails
  * @param poaQueueMax     JacORB's per-POA request queue; calls beyond it are refused, never queued
  * @param poaThreadsMax   threads serving requests
+ *
+ * <p>When this process speaks TLS ({@link TransportSecurity}), the ORB listens and connects with SSLIOP only,
+ * mutual authentication required both ways: no plain IIOP port is opened.
  */
 public record OrbSettings(String bindAddress, int port, String namingReference, int callTimeoutMillis,
                           int poaQueueMax, int poaThreadsMax) {
@@ -43,6 +47,18 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
     private static final String NAMING_DB_DIR = "jacorb.naming.db_dir";
     private static final String IMPL_NAME = "jacorb.implname";
     private static final String OBJECT_KEY_MAP = "jacorb.orb.objectKeyMap.";
+    private static final String LISTEN_TLS_PORT = "OASSLPort";
+    private static final String SUPPORT_SSL = "jacorb.security.support_ssl";
+    private static final String SSL_SOCKET_FACTORY = "jacorb.ssl.socket_factory";
+    private static final String SSL_SERVER_SOCKET_FACTORY = "jacorb.ssl.server_socket_factory";
+    private static final String[] SSL_OPTIONS = {"jacorb.security.ssl.client.supported_options",
+            "jacorb.security.ssl.client.required_options", "jacorb.security.ssl.server.supported_options",
+            "jacorb.security.ssl.server.required_options", "jacorb.security.ssl.corbaloc_ssliop.supported_options",
+            "jacorb.security.ssl.corbaloc_ssliop.required_options"};
+    /** EstablishTrustInTarget | EstablishTrustInClient (hex, as JacORB reads it): both ends prove who they are. */
+    private static final String MUTUAL_TRUST = "60";
+    private static final java.util.regex.Pattern PLAIN_CORBALOC =
+            java.util.regex.Pattern.compile("corbaloc:(?:iiop)?:(?:[0-9.]+@)?(.+)");
 
     public OrbSettings {
         Objects.requireNonNull(bindAddress, "bindAddress");
@@ -68,9 +84,22 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
         return new OrbSettings(LOOPBACK, 0, null, 5_000, 10_000, 32);
     }
 
-    /** {@code corbaloc::ADDRESS:PORT/NameService}. */
+    /** {@code corbaloc::ADDRESS:PORT/NameService}, or its SSLIOP form when this process speaks TLS. */
     public static String namingCorbaloc(String address, int port) {
-        return "corbaloc::" + address + ":" + port + "/NameService";
+        return reference("corbaloc::" + address + ":" + port + "/NameService");
+    }
+
+    /**
+     * {@code corbaloc} as this process must use it: when it speaks TLS ({@link TransportSecurity}), an IIOP corbaloc
+     * becomes {@code corbaloc:ssliop:1.2@ADDRESS:PORT/KEY} (JacORB takes TLS only with the version given); anything
+     * else is returned as it is.
+     */
+    public static String reference(String corbaloc) {
+        if (corbaloc == null || !TransportSecurity.isOn()) {
+            return corbaloc;
+        }
+        java.util.regex.Matcher m = PLAIN_CORBALOC.matcher(corbaloc);
+        return m.matches() ? "corbaloc:ssliop:1.2@" + m.group(1) : corbaloc;
     }
 
     public OrbSettings withBindAddress(String address) {
@@ -95,11 +124,20 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
         p.setProperty(ORB_CLASS, "org.jacorb.orb.ORB");
         p.setProperty(ORB_SINGLETON_CLASS, "org.jacorb.orb.ORBSingleton");
         p.setProperty(LISTEN_ADDRESS, bindAddress);
+        boolean tls = TransportSecurity.isOn();
         if (port != 0) {
-            p.setProperty(LISTEN_PORT, Integer.toString(port));
+            p.setProperty(tls ? LISTEN_TLS_PORT : LISTEN_PORT, Integer.toString(port));
         }
         if (namingReference != null) {
-            p.setProperty(NAMING_INIT_REF, namingReference);
+            p.setProperty(NAMING_INIT_REF, reference(namingReference));
+        }
+        if (tls) {
+            p.setProperty(SUPPORT_SSL, "on");
+            p.setProperty(SSL_SOCKET_FACTORY, IiopTlsSocketFactory.class.getName());
+            p.setProperty(SSL_SERVER_SOCKET_FACTORY, IiopTlsServerSocketFactory.class.getName());
+            for (String option : SSL_OPTIONS) {
+                p.setProperty(option, MUTUAL_TRUST);
+            }
         }
         p.setProperty(REPLY_TIMEOUT, Integer.toString(callTimeoutMillis));
         p.setProperty(CONNECT_TIMEOUT, Integer.toString(Math.min(callTimeoutMillis, 2_000)));

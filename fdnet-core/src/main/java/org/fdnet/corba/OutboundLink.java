@@ -333,8 +333,8 @@ public final class OutboundLink implements AutoCloseable {
         long expected;
         String failure;
         try {
-            expected = batch.target().deliver(
-                    new ValueBatch(id, firstSeq, batch.originStream(), batch.originFirstSeq(), encoded));
+            ValueBatch delivery = new ValueBatch(id, firstSeq, batch.originStream(), batch.originFirstSeq(), encoded);
+            expected = LinkFaults.deliver(() -> batch.target().deliver(delivery));
             failure = null;
         } catch (UnknownLink e) {
             expected = -1;

@@ -58,10 +58,16 @@ final class BenchTopology implements AutoCloseable {
     }
 
     static BenchTopology start(LinkSettings links) {
+        return start(links, List.of());
+    }
+
+    /** As above, {@code fdnet host bench-b} started with {@code childArgs} too (e.g. {@code --tls FILE}). */
+    static BenchTopology start(LinkSettings links, List<String> childArgs) {
         int namingPort = FdnetChildProcess.freePort();
         String corbaloc = NamingService.start(OrbSettings.defaults().withPort(namingPort), 15_000);
-        FdnetChildProcess child = FdnetChildProcess.start("host bench-b",
-                List.of("host", "--name", "bench-b", "--naming", corbaloc), " ready", 60_000);
+        List<String> args = new java.util.ArrayList<>(List.of("host", "--name", "bench-b", "--naming", corbaloc));
+        args.addAll(childArgs);
+        FdnetChildProcess child = FdnetChildProcess.start("host bench-b", args, " ready", 60_000);
         HostProcess a = null;
         HostProcess probe = null;
         try {

@@ -1,5 +1,9 @@
 package org.fdnet.corba.bench;
 
+import java.nio.file.Files;
+import org.fdnet.tls.KeyMaker;
+import org.fdnet.tls.TlsIdentity;
+import org.fdnet.tls.TransportSecurity;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.HdrHistogram.Histogram;
@@ -55,6 +59,10 @@ public final class CorbaBenchmark implements Runnable {
                     + " sender parks; 0 = park at once. bench-b (an fdnet host) keeps the default (default: ${DEFAULT-VALUE})")
     int spinMicros;
 
+    @Option(names = "--tls", description = "then measure back to back and sustained again over mutual TLS (throwaway"
+            + " keys made with fdnet keys' maker) and print the TLS cost beside the plain figures")
+    boolean tls;
+
     @Spec
     CommandSpec spec;
 
@@ -71,16 +79,66 @@ public final class CorbaBenchmark implements Runnable {
                 spinMicros, LinkSettings.DEFAULT_SPIN_MICROS);
         System.out.println("starting: naming service (in-process), host bench-b (child JVM), hosts bench-a and "
                 + "bench-probe (in-process) ...");
+        Figures plain;
         try (BenchTopology topology = BenchTopology.start(links); HopSampler sampler = new HopSampler(topology)) {
             System.out.println("topology: " + topology.describe());
-            backToBack(sampler);
+            Histogram[] calls = backToBack(sampler);
             idleGaps(sampler, new CpuClock(topology.remotePid()));
-            sustained(topology);
+            plain = new Figures(calls[0], calls[1], sustained(topology));
             System.out.println("links on bench-a: " + String.join("; ", List.of(topology.linkReport())));
+        }
+        if (tls) {
+            tlsCost(links, plain);
         }
     }
 
-    private void backToBack(HopSampler sampler) {
+    /** The back-to-back and sustained figures of one topology. */
+    private record Figures(Histogram bare, Histogram roundTrip, double rate) {
+    }
+
+    private void tlsCost(LinkSettings links, Figures plain) {
+        System.out.println();
+        progress("again over mutual TLS: throwaway keys for bench-a and bench-b, every ORB with --tls ...");
+        try {
+            KeyMaker maker = new KeyMaker(Files.createTempDirectory("fdnet-bench-keys-"));
+            Figures secure;
+            try {
+                maker.make(List.of("bench-a", "bench-b"));
+                TransportSecurity.use(TlsIdentity.load(maker.store("bench-a")));
+                try (BenchTopology topology = BenchTopology.start(links, List.of("--tls", maker.store("bench-b").toString()));
+                     HopSampler sampler = new HopSampler(topology)) {
+                    Histogram[] calls = backToBack(sampler);
+                    secure = new Figures(calls[0], calls[1], sustained(topology));
+                }
+            } finally {
+                TransportSecurity.off();
+                maker.deleteAll();
+            }
+            System.out.println();
+            System.out.println("TLS cost (same machine, same run; TLS 1.3, EC P-256, mutual authentication):");
+            System.out.printf("  %-36s %12s %12s %8s%n", "", "plain", "TLS", "TLS/plain");
+            cost("bare two-way call p50 (us)", p50(plain.bare()), p50(secure.bare()));
+            cost("bare two-way call p99 (us)", p99(plain.bare()), p99(secure.bare()));
+            cost("round trip A -> B -> back p50 (us)", p50(plain.roundTrip()), p50(secure.roundTrip()));
+            cost("round trip A -> B -> back p99 (us)", p99(plain.roundTrip()), p99(secure.roundTrip()));
+            cost("sustained values/s", plain.rate(), secure.rate());
+        } catch (java.io.IOException e) {
+            throw new IllegalStateException("cannot make the benchmark's TLS keys: " + e.getMessage(), e);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private static void cost(String label, double plain, double secure) {
+        System.out.printf("  %-36s %,12.1f %,12.1f %8.2f%n", label, plain, secure, secure / plain);
+    }
+
+    private static double p99(Histogram h) {
+        return h.getValueAtPercentile(99) / 1000.0;
+    }
+
+    /** Prints the back-to-back figures; returns the bare calls and the round trips. */
+    private Histogram[] backToBack(HopSampler sampler) {
         progress("back to back: %d bare calls, then %d round trips (+ %d warm-up each) ...", samples, samples, warmup);
         Histogram bare = sampler.bare(warmup, samples, 0);
         HopSampler.Samples hop = sampler.hops(warmup, samples, 0, true);
@@ -96,6 +154,7 @@ public final class CorbaBenchmark implements Runnable {
         System.out.printf("%-50s p50 %8.1f us   (half the bare round trip: a one-way baseline, not measured)%n",
                 "one-way baseline: bare p50 / 2", bareP50 / 2);
         System.out.printf("%-50s %.2f x half the bare call%n", "one-way p50 / (bare p50 / 2):", p50(hop.oneWay()) / (bareP50 / 2));
+        return new Histogram[] {bare, hop.roundTrip()};
     }
 
     private void idleGaps(HopSampler sampler, CpuClock cpu) {
@@ -122,7 +181,8 @@ public final class CorbaBenchmark implements Runnable {
         }
     }
 
-    private void sustained(BenchTopology topology) {
+    /** Prints the sustained figures; returns the rate in values per second. */
+    private double sustained(BenchTopology topology) {
         progress("%nsustained: writing seq on bench-a as fast as one thread can for %d s ...", seconds);
         ArrivalCount count = new ArrivalCount(TimeUnit.SECONDS.toNanos(WINDOW_SECONDS));
         long sent = 0;
@@ -165,6 +225,7 @@ public final class CorbaBenchmark implements Runnable {
                     (i + 1) * WINDOW_SECONDS, perWindow[i] / WINDOW_SECONDS));
         }
         System.out.println("  arrivals per " + WINDOW_SECONDS + " s window: " + windows);
+        return rate;
     }
 
     /** Waits until every written value has arrived, or nothing has arrived for 30 s. */

@@ -22,7 +22,9 @@ import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.Value;
 import org.fdnet.runtime.cli.ControlCommands;
 import org.fdnet.runtime.cli.DurationText;
+import org.fdnet.tls.TlsOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -61,6 +63,9 @@ public final class ControlCommand implements Callable<Integer> {
             description = "watch: how long (default: until the network stops or Ctrl-C)")
     Duration duration;
 
+    @Mixin
+    TlsOptions tls;
+
     @Spec
     CommandSpec spec;
 
@@ -68,6 +73,13 @@ public final class ControlCommand implements Callable<Integer> {
     public Integer call() throws InterruptedException {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
+        try {
+            tls.apply();
+        } catch (IllegalArgumentException e) {
+            err.println("fdnet control: " + e.getMessage());
+            err.flush();
+            return 2;
+        }
         String namingRef = naming != null ? naming
                 : namingPort != null ? OrbSettings.namingCorbaloc(OrbSettings.LOOPBACK, namingPort) : null;
         RemoteLiveNetwork network;

@@ -29,6 +29,11 @@ public final class ControlOptions {
      *
      * @throws IllegalArgumentException naming the option when it cannot be published there
      */
+    /** The address the control object listens on. */
+    public String host() {
+        return host;
+    }
+
     public ControlPublication publish(LiveNetwork network, PrintWriter out) {
         if (off) {
             return null;

@@ -22,6 +22,15 @@ public final class DistributionOptions {
             description = "the host name of this process in a distributed run (default: run-PID)")
     String localHostName;
 
+    /**
+     * Applies {@code --tls} and refuses a non-loopback {@code --bind} or control address without TLS or {@code --insecure};
+     * before any connection of the run (its logger client too) is made.
+     */
+    public void secure(String controlAddress) {
+        naming.secure("this run's host");
+        naming.tls.requireSafeBind("the network's control object", controlAddress);
+    }
+
     /** Whether {@code definition} must be distributed (a node names another host). */
     public boolean appliesTo(NetworkInfo definition) {
         return DistributedRun.spansHosts(definition);

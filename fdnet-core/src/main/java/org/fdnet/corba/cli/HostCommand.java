@@ -7,6 +7,7 @@ import java.util.concurrent.Callable;
 import org.fdnet.corba.ClassPolicy;
 import org.fdnet.corba.HostProcess;
 import org.fdnet.corba.HostUnreachableException;
+import org.fdnet.corba.LinkFaults;
 import org.fdnet.corba.LinkSettings;
 import org.fdnet.corba.LocalNetworks;
 import org.fdnet.corba.RuntimeLocalNetwork;
@@ -35,6 +36,11 @@ public final class HostCommand implements Callable<Integer> {
                     + " without it the host records with the logger fdnet run --logger hands over")
     String logger;
 
+    @Option(names = "--link-faults", paramLabel = "FILE", hidden = true,
+            description = "soak tests: FILE switches faults in this host's outgoing links on (drop=SHARE,delay=MS)"
+                    + " and off (empty or missing) while it runs (see fdnet soak)")
+    Path linkFaults;
+
     @Mixin
     NamingOptions naming;
 
@@ -46,6 +52,10 @@ public final class HostCommand implements Callable<Integer> {
         HostProcess host;
         RuntimeLocalNetwork engine = LocalNetworks.forHost(name, allowedPaths);
         try {
+            naming.secure("this host");
+            if (linkFaults != null) {
+                LinkFaults.install(linkFaults);
+            }
             if (logger != null) {
                 engine.useLogger(logger);
             }

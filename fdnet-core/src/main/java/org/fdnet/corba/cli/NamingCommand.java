@@ -4,7 +4,9 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import org.fdnet.corba.NamingService;
 import org.fdnet.corba.OrbSettings;
+import org.fdnet.tls.TlsOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -20,6 +22,9 @@ public final class NamingCommand implements Callable<Integer> {
             defaultValue = OrbSettings.LOOPBACK)
     String bind;
 
+    @Mixin
+    TlsOptions tls;
+
     @Spec
     CommandSpec spec;
 
@@ -27,6 +32,8 @@ public final class NamingCommand implements Callable<Integer> {
     public Integer call() {
         String corbaloc;
         try {
+            tls.apply();
+            tls.requireSafeBind("the naming service", bind);
             corbaloc = NamingService.start(OrbSettings.defaults().withBindAddress(bind).withPort(port), 15_000);
         } catch (IllegalArgumentException | IllegalStateException e) {
             spec.commandLine().getErr().println("fdnet naming: " + e.getMessage());

@@ -1,6 +1,8 @@
 package org.fdnet.corba.cli;
 
 import org.fdnet.corba.OrbSettings;
+import org.fdnet.tls.TlsOptions;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /** Where the naming service is: {@code --naming corbaloc} or {@code --naming-port P} on 127.0.0.1. */
@@ -14,6 +16,20 @@ public final class NamingOptions {
     @Option(names = "--bind", description = "address this process listens on (default: ${DEFAULT-VALUE})",
             defaultValue = OrbSettings.LOOPBACK)
     String bind;
+
+    @Mixin
+    TlsOptions tls;
+
+    /**
+     * Turns TLS on when asked and refuses to listen off loopback without it (see {@link TlsOptions}).
+     *
+     * @throws IllegalArgumentException when the key store cannot be used
+     * @throws IllegalStateException    when {@code --bind} is not loopback and there is neither TLS nor {@code --insecure}
+     */
+    public void secure(String what) {
+        tls.apply();
+        tls.requireSafeBind(what, bind);
+    }
 
     public String corbaloc() {
         if (corbaloc != null) {

@@ -82,7 +82,7 @@ public final class ControlPublication implements AutoCloseable {
             byte[] id = OBJECT_ID.getBytes(StandardCharsets.US_ASCII);
             poa.activate_object_with_id(id, servant);
             RunningNetwork ref = RunningNetworkHelper.narrow(poa.id_to_reference(id));
-            String address = "corbaloc::" + bindAddress + ":" + chosen + "/" + OBJECT_KEY;
+            String address = OrbSettings.reference("corbaloc::" + bindAddress + ":" + chosen + "/" + OBJECT_KEY);
             ControlPublication p = new ControlPublication(network.name(), servant, ref, address, address, orb, null);
             p.writeRunFile();
             return p;

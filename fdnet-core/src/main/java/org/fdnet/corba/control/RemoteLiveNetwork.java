@@ -163,7 +163,7 @@ public final class RemoteLiveNetwork implements LiveNetwork {
         }
         where[0] = ref.startsWith("IOR:") ? "'" + target + "'" : ref;
         try {
-            return RunningNetworkHelper.unchecked_narrow(orb.orb().string_to_object(ref));
+            return RunningNetworkHelper.unchecked_narrow(orb.orb().string_to_object(OrbSettings.reference(ref)));
         } catch (org.omg.CORBA.BAD_PARAM e) {
             throw new NetworkUnreachableException("'" + target + "' is not an address of a network (" + e + ")", e);
         }

@@ -4,7 +4,6 @@ import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
-import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
@@ -24,6 +23,7 @@ import org.fdnet.event.wire.Hello;
 import org.fdnet.event.wire.MessageType;
 import org.fdnet.event.wire.Protocol;
 import org.fdnet.event.wire.ProtocolException;
+import org.fdnet.tls.TransportSecurity;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -200,9 +200,7 @@ public final class LoggerClient implements EventSink {
     private void sendLoop() {
         boolean reported = false;
         while (!closing) {
-            try (Socket s = new Socket()) {
-                s.setTcpNoDelay(true);
-                s.connect(new InetSocketAddress(settings.host(), settings.port()), 5000);
+            try (Socket s = TransportSecurity.connect(settings.host(), settings.port(), 5000)) {
                 socket = s;
                 serve(s);
                 reported = false;

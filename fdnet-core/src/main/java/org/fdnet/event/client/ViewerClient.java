@@ -4,7 +4,6 @@ import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
-import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.util.ArrayList;
 import java.util.List;
@@ -28,6 +27,7 @@ import org.fdnet.event.wire.LoggedNode;
 import org.fdnet.event.wire.MessageType;
 import org.fdnet.event.wire.Protocol;
 import org.fdnet.event.wire.ProtocolException;
+import org.fdnet.tls.TransportSecurity;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -68,9 +68,7 @@ public final class ViewerClient implements AutoCloseable {
 
     public ViewerClient(String host, int port, String name, Consumer<NetworkEvent> monitorListener) throws IOException {
         this.monitorListener = monitorListener;
-        socket = new Socket();
-        socket.setTcpNoDelay(true);
-        socket.connect(new InetSocketAddress(host, port), 5000);
+        socket = TransportSecurity.connect(host, port, 5000);
         out = new BufferedOutputStream(socket.getOutputStream());
         FrameReader in = new FrameReader(new BufferedInputStream(socket.getInputStream()), Protocol.DEFAULT_MAX_FRAME_BYTES);
         synchronized (writer) {

@@ -118,6 +118,13 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
             return 1;
         }
+        try {
+            distribution.secure(control.host());
+        } catch (IllegalArgumentException | IllegalStateException e) {
+            err.println("fdnet run: " + e.getMessage());
+            err.flush();
+            return 2;
+        }
         EventCounter counter = new EventCounter();
         if (loggerViewer != null && !loggerViewer.matches("[^:\\s]+:[0-9]{1,5}")) {
             err.println("--logger-viewer " + loggerViewer + ": expected HOST:PORT, e.g. 127.0.0.1:5556");

@@ -79,6 +79,13 @@ public final class BenchLoggerCommand implements Callable<Integer> {
     @Option(names = "--compare-binary", description = "also time the raw COPY baseline in binary COPY format")
     boolean compareBinary;
 
+    @Option(names = "--tls", description = "then [5]: the cost of mutual TLS — a producer at full speed and viewer"
+            + " queries, plain then TLS, each into a fresh logger on the same database (--tls-seconds each)")
+    boolean tls;
+
+    @Option(names = "--tls-seconds", defaultValue = "15", description = "length of each [5] producer run (default 15)")
+    int tlsSeconds;
+
     @Option(names = "--db", description = "external database jdbc:postgresql://... (default: a fresh embedded one, fsync on)")
     String db;
 
@@ -116,6 +123,9 @@ public final class BenchLoggerCommand implements Callable<Integer> {
                 burstAndQueries(logger, target);
             } finally {
                 heap.interrupt();
+            }
+            if (tls) {
+                new LoggerTlsCost(config, target, tlsSeconds, nodes).run();
             }
             report.info("peak heap (logger JVM)", String.format("%,d MiB", peakHeap.get() >> 20));
             report.printSummary();

@@ -1,5 +1,8 @@
 package org.fdnet.logger.cli;
 
+import java.nio.file.Path;
+import org.fdnet.tls.TlsIdentity;
+import org.fdnet.tls.TransportSecurity;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
@@ -24,7 +27,7 @@ import org.fdnet.netinfo.NodeRef;
  * {@code memoryEvents} (0: the client's default) is the client's in-memory window: the burst gives it room
  * for all its events, so that the logger's receiver and cache — not the client — decide the pace.
  * Prints {@code accepted N lost L acked A}.
- * Usage: {@code BenchProducer HOST PORT EVENTS SECONDS NODES RATE MODULE go|now MEMORY_EVENTS}
+ * Usage: {@code BenchProducer HOST PORT EVENTS SECONDS NODES RATE MODULE go|now MEMORY_EVENTS [TLS_STORE]}
  */
 public final class BenchProducer {
     private BenchProducer() {
@@ -40,6 +43,9 @@ public final class BenchProducer {
         String module = args[6];
         boolean waitForGo = args[7].equals("go");
         int memoryEvents = Integer.parseInt(args[8]);
+        if (args.length > 9) {
+            TransportSecurity.use(TlsIdentity.load(Path.of(args[9])));
+        }
         LoggerClientSettings settings = LoggerClientSettings.defaults(host, port, "bench-" + module)
                 .withFlushTimeout(Duration.ofMinutes(10));
         if (memoryEvents > 0) {

@@ -12,8 +12,12 @@ import org.fdnet.logger.config.LoggerConfig;
 import org.fdnet.logger.config.LoggerConfigFile;
 import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.logger.ui.LoggerFrame;
+import org.fdnet.tls.TlsOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code fdnet logger}: starts the network state logger (embedded PostgreSQL unless {@code --db}) and
@@ -36,6 +40,17 @@ public final class LoggerCommand implements Callable<Integer> {
 
     @Option(names = "--sender-port", paramLabel = "P", description = "port for viewers (default 5556)")
     Integer senderPort;
+
+    @Option(names = "--bind", paramLabel = "ADDR",
+            description = "address both ports listen on (default 127.0.0.1, or the configuration file's); another"
+                    + " address needs --tls or --insecure")
+    String bind;
+
+    @Mixin
+    TlsOptions tls;
+
+    @Spec
+    CommandSpec spec;
 
     @Option(names = "--config", paramLabel = "FILE", description = "configuration file (default ~/.fdnet/logger.properties)")
     Path configFile;
@@ -69,9 +84,18 @@ public final class LoggerCommand implements Callable<Integer> {
             if (senderPort != null) {
                 config.set(LoggerSetting.SENDER_PORT, senderPort.toString());
             }
+            if (bind != null) {
+                config.set(LoggerSetting.RECEIVER_ADDRESS, bind).set(LoggerSetting.SENDER_ADDRESS, bind);
+            }
             config.validate();
-        } catch (IllegalArgumentException e) {
-            System.err.println("fdnet logger: " + e.getMessage());
+            if (screenshot == null) {
+                tls.apply();
+                tls.requireSafeBind("the logger's receiver port (cores)", config.receiverAddress());
+                tls.requireSafeBind("the logger's viewer port", config.senderAddress());
+            }
+        } catch (IllegalArgumentException | IllegalStateException e) {
+            spec.commandLine().getErr().println("fdnet logger: " + e.getMessage());
+            spec.commandLine().getErr().flush();
             return 2;
         }
         if (screenshot != null) {
@@ -109,9 +133,10 @@ public final class LoggerCommand implements Callable<Integer> {
             System.out.println("fdnet logger: told to retry the database");
             logger.retryDatabase();
         });
-        System.out.printf("fdnet logger: cores -> 127.0.0.1:%d, viewers -> 127.0.0.1:%d (Ctrl-C stops; type retry, or"
-                + " kill -HUP " + ProcessHandle.current().pid() + ", to retry a database reported DOWN; help lists the"
-                + " commands)%n", logger.receiverPort(), logger.senderPort());
+        System.out.printf("fdnet logger: cores -> %s:%d, viewers -> %s:%d%s (Ctrl-C stops; type retry, or kill -HUP "
+                + ProcessHandle.current().pid() + ", to retry a database reported DOWN; help lists the commands)%n",
+                config.receiverAddress(), logger.receiverPort(), config.senderAddress(), logger.senderPort(),
+                tls.tls() ? ", mutual TLS" : "");
         System.out.flush();
         // A logger started in the background of an interactive shell must not be stopped (SIGTTIN) for reading
         // its terminal: with TTIN ignored the read fails instead, and only the prompt ends.

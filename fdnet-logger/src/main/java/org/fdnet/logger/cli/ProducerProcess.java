@@ -22,6 +22,12 @@ final class ProducerProcess implements AutoCloseable {
 
     ProducerProcess(int port, long events, long seconds, int nodes, long rate, String module, boolean waitForGo,
                     int memoryEvents) throws IOException {
+        this(port, events, seconds, nodes, rate, module, waitForGo, memoryEvents, null);
+    }
+
+    /** As above; with {@code tlsStore} the producer connects over mutual TLS with that certificate. */
+    ProducerProcess(int port, long events, long seconds, int nodes, long rate, String module, boolean waitForGo,
+                    int memoryEvents, Path tlsStore) throws IOException {
         long heapMb = Math.max(1024, 512 + (long) memoryEvents * 400 / (1 << 20)); // ~400 bytes per event held
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx" + heapMb + "m", "-Dorg.slf4j.simpleLogger.defaultLogLevel=warn"));
@@ -29,6 +35,9 @@ final class ProducerProcess implements AutoCloseable {
         cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), BenchProducer.class.getName(), "127.0.0.1",
                 Integer.toString(port), Long.toString(events), Long.toString(seconds), Integer.toString(nodes),
                 Long.toString(rate), module, waitForGo ? "go" : "now", Integer.toString(memoryEvents)));
+        if (tlsStore != null) {
+            cmd.add(tlsStore.toString());
+        }
         process = new ProcessBuilder(cmd).redirectErrorStream(true).start();
         reader = new Thread(() -> {
             try (BufferedReader r = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {

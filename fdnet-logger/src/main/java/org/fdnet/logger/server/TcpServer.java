@@ -5,6 +5,7 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import org.fdnet.tls.TransportSecurity;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -24,7 +25,7 @@ public final class TcpServer implements AutoCloseable {
     public TcpServer(String name, String address, int port, ConnectionFactory factory) throws IOException {
         this.name = name;
         this.factory = factory;
-        this.serverSocket = new ServerSocket();
+        this.serverSocket = TransportSecurity.serverSocket();
         serverSocket.setReuseAddress(true);
         try {
             serverSocket.bind(new InetSocketAddress(InetAddress.getByName(address), port), 200);

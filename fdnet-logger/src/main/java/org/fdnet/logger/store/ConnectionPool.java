@@ -11,7 +11,10 @@ import org.slf4j.LoggerFactory;
 /**
  * A few database connections for viewer queries, so 100 viewers do not open 100 connections. Borrow with
  * {@link #borrow}, give back with {@link #giveBack} (pass {@code broken} when the connection failed: it is
- * closed instead of reused). Hazard: a connection not given back is a permit lost.
+ * closed instead of reused, and so are the idle ones: a connection breaks mostly because the server restarted,
+ * and then every idle one is dead too — handing them out one by one made a writer spend its reconnect attempts
+ * on dead connections after PostgreSQL came back, found by {@code fdnet soak}). Hazard: a connection not given
+ * back is a permit lost.
  */
 public final class ConnectionPool implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(ConnectionPool.class);
@@ -49,6 +52,10 @@ public final class ConnectionPool implements AutoCloseable {
         try {
             if (broken) {
                 close(c);
+                synchronized (idle) {
+                    idle.forEach(ConnectionPool::close);
+                    idle.clear();
+                }
             } else {
                 synchronized (idle) {
                     idle.addLast(c);

@@ -9,7 +9,9 @@ import java.util.concurrent.CountDownLatch;
 import javax.swing.SwingUtilities;
 import org.fdnet.viewer.source.Replay;
 import org.fdnet.viewer.ui.ViewerWindow;
+import org.fdnet.tls.TlsOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /** {@code fdnet viewer}: the Network State Viewer on a logger's viewer service. */
@@ -44,6 +46,9 @@ public final class ViewerCommand implements Callable<Integer> {
     @Option(names = "--screenshot", paramLabel = "FILE", description = "write a PNG of the window after --after seconds, then exit")
     Path screenshot;
 
+    @Mixin
+    TlsOptions tls;
+
     @Option(names = "--after", defaultValue = "4", description = "seconds to wait before --screenshot (default ${DEFAULT-VALUE})")
     double after;
 
@@ -56,6 +61,7 @@ public final class ViewerCommand implements Callable<Integer> {
         }
         ViewerWindow window;
         try {
+            tls.apply();
             window = ViewerWindow.open(logger, nodes);
         } catch (IllegalArgumentException e) {
             System.err.println("fdnet viewer: " + e.getMessage());

@@ -12,6 +12,8 @@ public enum MessageType {
     EVENTS(10),
     /** logger → core: every event of the run up to this sequence number is committed. */
     ACK(11),
+    /** core → logger, once per connection right after WELCOME: the network run and host its events belong to. */
+    RUN(12),
     /** viewer → logger: request id, node ids, from, to. */
     HISTORY(20),
     /** logger → viewer: request id, events (several chunks per request). */

@@ -2,6 +2,8 @@ package org.fdnet.logger.store;
 
 import java.sql.Array;
 import java.sql.Connection;
+import org.fdnet.event.RunIdentity;
+import org.fdnet.event.wire.RunFrame;
 import java.sql.PreparedStatement;
 import java.sql.ResultSet;
 import java.sql.SQLException;
@@ -335,6 +337,35 @@ public final class EventStore implements AutoCloseable {
                 broken = false;
                 return row;
             }
+        } finally {
+            pool.giveBack(c, broken);
+        }
+    }
+
+    /**
+     * Files the stream {@code runId} under the network run {@code part.run()} (made on its first mention) as
+     * host {@code part.host()}; saying it again changes nothing.
+     */
+    public void joinNetworkRun(int runId, RunFrame part) throws SQLException {
+        RunIdentity r = part.run();
+        Connection c = pool.borrow();
+        boolean broken = true;
+        try (PreparedStatement ins = c.prepareStatement("INSERT INTO fdnet_network_run (run_uuid, network, definition,"
+                + " definition_sha256, started, hosts) VALUES (?, ?, ?, ?, ?, ?) ON CONFLICT (run_uuid) DO NOTHING");
+             PreparedStatement upd = c.prepareStatement("UPDATE fdnet_run SET host = ?, network_run_id ="
+                     + " (SELECT network_run_id FROM fdnet_network_run WHERE run_uuid = ?) WHERE run_id = ?")) {
+            ins.setObject(1, r.id());
+            ins.setString(2, r.network());
+            ins.setString(3, r.definition());
+            ins.setString(4, r.sha256());
+            ins.setLong(5, r.startedMicros());
+            ins.setArray(6, c.createArrayOf("text", r.hosts().toArray()));
+            ins.executeUpdate();
+            upd.setString(1, part.host());
+            upd.setObject(2, r.id());
+            upd.setInt(3, runId);
+            upd.executeUpdate();
+            broken = false;
         } finally {
             pool.giveBack(c, broken);
         }

@@ -101,6 +101,11 @@ public final class LoggerClient implements EventSink {
         return run;
     }
 
+    /** The network run this client records a part of, or {@code null} when it does not say. */
+    public RunIdentity networkRun() {
+        return networkRun == null ? null : networkRun.run();
+    }
+
     @Override
     public void accept(NetworkEvent event) {
         lock.lock();

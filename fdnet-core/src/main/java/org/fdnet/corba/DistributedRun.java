@@ -15,8 +15,6 @@ import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.corba.control.ControlPublication;
-import org.fdnet.corba.control.DistributedLiveNetwork;
 import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.runtime.Placement;
 import org.fdnet.runtime.RuntimeOptions;
@@ -133,15 +131,19 @@ public final class DistributedRun implements AutoCloseable {
         return control;
     }
 
-    /** The run as a live network (for its control object), named {@code name}. */
-    public DistributedLiveNetwork live(String name) {
-        return new DistributedLiveNetwork(name, control, deployment,
-                java.util.Optional.ofNullable(request.loggerViewerAddress()));
+    /** The deployment: hosts, links, the plan now. */
+    public NetworkDeployment deployment() {
+        return deployment;
     }
 
-    /** Registers {@code live} in the run's naming service, for {@code fdnet control} and {@code fdnet hi --attach}. */
-    public ControlPublication publishInNaming(DistributedLiveNetwork live) {
-        return ControlPublication.inNaming(live, local.orb());
+    /** The ORB of this process's host (a control object registers through it in the naming service). */
+    public OrbRuntime orb() {
+        return local.orb();
+    }
+
+    /** {@code HOST:PORT} of the viewer service of the logger the hosts record with, if given. */
+    public java.util.Optional<String> loggerViewerAddress() {
+        return java.util.Optional.ofNullable(request.loggerViewerAddress());
     }
 
     /** The run's status line: hosts lost, links broken, values through this process. */

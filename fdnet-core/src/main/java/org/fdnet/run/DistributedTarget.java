@@ -31,7 +31,7 @@ final class DistributedTarget implements RunTarget {
 
     @Override
     public LiveNetwork live(String name) {
-        return run.live(name);
+        return new DistributedLiveNetwork(name, run.control(), run.deployment(), run.loggerViewerAddress());
     }
 
     /** Registered in the naming service; a run whose naming service refuses still runs, and says so. */
@@ -41,7 +41,7 @@ final class DistributedTarget implements RunTarget {
             return null;
         }
         try {
-            ControlPublication p = run.publishInNaming((DistributedLiveNetwork) live);
+            ControlPublication p = ControlPublication.inNaming(live, run.orb());
             out.println(p.announcement());
             return p;
         } catch (RuntimeException e) {

@@ -267,7 +267,8 @@ public final class NetworkRun {
                     engine, hostAndLinkEvents, options.logger, options.loggerViewer),
                     (text, hosts) -> RunIdentity.start(network, text, hosts), out);
             identity = run.run();
-            out.printf("run %s of %s started%n", identity.id(), network);
+            out.printf("run %s of %s started; this process's host runs %d worker threads%n", identity.id(), network,
+                    run.localEngine().runtime().workerThreads());
             out.flush();
             return new DistributedTarget(run, !options.control.off());
         } catch (DeploymentException e) {

@@ -112,15 +112,20 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     }
 
     @Override
-    public boolean recordRun(String address, RunDescription run) throws Refused {
+    public boolean recordRun(String address, RunDescription run, long clockOffsetMicros) throws Refused {
         try {
-            return network.recordRun(address, IdlMapping.run(run));
+            return network.recordRun(address, IdlMapping.run(run), clockOffsetMicros);
         } catch (IllegalArgumentException | UnsupportedOperationException e) {
             LOG.warn("host {} refused to record run {} with the logger at {}: {}", hostName, run.id, address,
                     e.getMessage());
             throw new Refused("host " + hostName + " cannot record run " + run.id + " with the logger at " + address
                     + ": " + e.getMessage());
         }
+    }
+
+    @Override
+    public long clockMicros() {
+        return System.currentTimeMillis() * 1000;
     }
 
     @Override

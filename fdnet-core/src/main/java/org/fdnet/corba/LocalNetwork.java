@@ -79,12 +79,13 @@ public interface LocalNetwork {
 
     /**
      * Records this host's events as its part of the network run {@code run}, with the logger at {@code hostPort}
-     * (or the host's own); {@code false} when nothing is recorded or {@code run} already is.
+     * (or the host's own), this host's clock being {@code clockOffsetMicros} ahead of the coordinator's;
+     * {@code false} when nothing is recorded or {@code run} already is.
      *
      * @throws UnsupportedOperationException when this engine has no events to record
      * @throws IllegalArgumentException when {@code hostPort} is not {@code HOST:PORT}
      */
-    default boolean recordRun(String hostPort, RunIdentity run) {
+    default boolean recordRun(String hostPort, RunIdentity run, long clockOffsetMicros) {
         throw new UnsupportedOperationException("this host's engine (" + getClass().getSimpleName()
                 + ") records no events");
     }

@@ -165,7 +165,8 @@ public final class NetworkDeployment implements AutoCloseable {
 
     /** Tells a host of this network the logger to record with and the coordinator its Servants ask. */
     private void welcome(String hostName, Host host) throws Refused {
-        if (recording != null && host.recordRun(recording.loggerAddress(), IdlMapping.description(recording.run()))) {
+        if (recording != null && host.recordRun(recording.loggerAddress(), IdlMapping.description(recording.run()),
+                ClockOffset.of(host))) {
             LOG.info("host {} records its part of run {}", hostName, recording.run().id());
         }
         NetworkCoordinator c = coordinator;

@@ -91,7 +91,7 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
      * @throws IllegalArgumentException when the address is not {@code HOST:PORT}
      */
     @Override
-    public synchronized boolean recordRun(String hostPort, RunIdentity run) {
+    public synchronized boolean recordRun(String hostPort, RunIdentity run, long clockOffsetMicros) {
         String address = ownLogger != null ? ownLogger : hostPort;
         if (address == null || address.isEmpty() || (recording != null && recording.run().id().equals(run.id()))) {
             return false;
@@ -100,7 +100,8 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
         if (recording != null) {
             endRun(recording.run().id());
         }
-        recording = new HostRecording(new LoggerClient(settings, run, hostName), standIns::contains);
+        recording = new HostRecording(new LoggerClient(settings, run, hostName, clockOffsetMicros),
+                standIns::contains);
         runtime.addSink(recording);
         LOG.info("host {} records its part of {} run {} with the logger at {}", hostName, run.network(), run.id(),
                 address);

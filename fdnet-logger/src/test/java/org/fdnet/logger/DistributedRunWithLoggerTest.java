@@ -126,6 +126,8 @@ class DistributedRunWithLoggerTest {
                     + " LIMIT 1")).isEqualTo("two-robots flyer,crawler,operator-station");
             assertThat(database.fixture().text("SELECT string_agg(r.host, ',' ORDER BY r.host)" + streams))
                     .isEqualTo("crawler,flyer,operator-station");
+            // The coordinator measured each host's clock: one machine, so every offset is far below a second.
+            assertThat(database.fixture().count("SELECT max(abs(r.clock_offset))" + streams)).isLessThan(1_000_000);
             // Each host's stream holds exactly what that host says the logger committed of its part. The --param
             // re-made Survey on the flyer under the same node id: named twice, kept as one fdnet_node row.
             Map<String, Long> renamed = Map.of("flyer", 1L, "crawler", 0L, "operator-station", 0L);

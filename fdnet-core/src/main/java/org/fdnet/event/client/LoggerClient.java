@@ -84,7 +84,12 @@ public final class LoggerClient implements EventSink {
      * of this client under that run, with the host beside it.
      */
     public LoggerClient(LoggerClientSettings settings, RunIdentity networkRun, String host) {
-        this(settings, UUID.randomUUID(), new RunFrame(networkRun, host));
+        this(settings, networkRun, host, 0);
+    }
+
+    /** As above, for a host whose clock is {@code clockOffsetMicros} ahead of the run's coordinator's. */
+    public LoggerClient(LoggerClientSettings settings, RunIdentity networkRun, String host, long clockOffsetMicros) {
+        this(settings, UUID.randomUUID(), new RunFrame(networkRun, host, clockOffsetMicros));
     }
 
     private LoggerClient(LoggerClientSettings settings, UUID run, RunFrame networkRun) {

@@ -3,6 +3,7 @@ package org.fdnet.logger.store;
 import java.sql.Array;
 import java.sql.Connection;
 import org.fdnet.event.RunIdentity;
+import org.fdnet.event.wire.LoggedRun;
 import org.fdnet.event.wire.RunFrame;
 import java.sql.PreparedStatement;
 import java.sql.ResultSet;
@@ -352,7 +353,7 @@ public final class EventStore implements AutoCloseable {
         boolean broken = true;
         try (PreparedStatement ins = c.prepareStatement("INSERT INTO fdnet_network_run (run_uuid, network, definition,"
                 + " definition_sha256, started, hosts) VALUES (?, ?, ?, ?, ?, ?) ON CONFLICT (run_uuid) DO NOTHING");
-             PreparedStatement upd = c.prepareStatement("UPDATE fdnet_run SET host = ?, network_run_id ="
+             PreparedStatement upd = c.prepareStatement("UPDATE fdnet_run SET host = ?, clock_offset = ?, network_run_id ="
                      + " (SELECT network_run_id FROM fdnet_network_run WHERE run_uuid = ?) WHERE run_id = ?")) {
             ins.setObject(1, r.id());
             ins.setString(2, r.network());
@@ -362,13 +363,27 @@ public final class EventStore implements AutoCloseable {
             ins.setArray(6, c.createArrayOf("text", r.hosts().toArray()));
             ins.executeUpdate();
             upd.setString(1, part.host());
-            upd.setObject(2, r.id());
-            upd.setInt(3, runId);
+            upd.setLong(2, part.clockOffsetMicros());
+            upd.setObject(3, r.id());
+            upd.setInt(4, runId);
             upd.executeUpdate();
             broken = false;
         } finally {
             pool.giveBack(c, broken);
         }
+    }
+
+    /**
+     * Every stream (fdnet_run row), oldest first, with its network run; a stream of schema 1 or of a core that
+     * named no run stands for itself (network run 0, named by its core, started when first seen, one host).
+     */
+    public List<LoggedRun> loadRuns() throws SQLException {
+        return query("SELECT r.run_id, coalesce(n.network_run_id, 0), coalesce(n.network, r.core_name),"
+                + " coalesce(r.host, r.core_name), coalesce(n.started, (extract(epoch FROM r.first_seen) * 1000000)::bigint),"
+                + " coalesce(cardinality(n.hosts), 1), r.clock_offset FROM fdnet_run r"
+                + " LEFT JOIN fdnet_network_run n USING (network_run_id) ORDER BY r.run_id",
+                rs -> new LoggedRun(rs.getInt(1), rs.getInt(2), rs.getString(3), rs.getString(4), rs.getLong(5),
+                        rs.getInt(6), rs.getLong(7)));
     }
 
     public List<NodeMapping> loadMappings(int runId) throws SQLException {

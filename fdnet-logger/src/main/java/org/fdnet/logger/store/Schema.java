@@ -41,6 +41,9 @@ public final class Schema {
         "ALTER TABLE fdnet_run ADD COLUMN IF NOT EXISTS network_run_id integer"
                 + " REFERENCES fdnet_network_run (network_run_id)",
         "ALTER TABLE fdnet_run ADD COLUMN IF NOT EXISTS host text",
+        // µs the host's clock is ahead of the run's coordinator's (measured at deployment): time - clock_offset
+        // puts every host's events on the coordinator's time axis
+        "ALTER TABLE fdnet_run ADD COLUMN IF NOT EXISTS clock_offset bigint NOT NULL DEFAULT 0",
     };
 
     private Schema() {

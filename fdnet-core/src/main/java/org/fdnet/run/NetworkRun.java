@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.ServiceLoader;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import org.fdnet.control.ControlledLiveNetwork;
 import org.fdnet.control.LiveNetwork;
 import org.fdnet.corba.DeploymentException;
 import org.fdnet.corba.DistributedRun;
@@ -165,6 +166,9 @@ public final class NetworkRun {
         } finally {
             if (published != null) {
                 published.close("the network " + name + " stopped");
+            }
+            if (live instanceof ControlledLiveNetwork controlled) {
+                controlled.networkStopped("the network " + name + " stopped"); // tools attached in this process
             }
             if (options.logger != null) {
                 out.printf("waiting for the logger at %s to commit the run's events ...%n", options.logger);

@@ -62,6 +62,7 @@ public final class NetworkRun {
     private final CountDownLatch stopped = new CountDownLatch(1);
     private volatile RunIdentity identity;
     private volatile LiveNetwork live;
+    private int notStarted = 1; // the exit code when the network did not start: 2 when an option was at fault
 
     /** {@code commands}: where standard-input commands come from ({@code null}: none, e.g. in the editor). */
     public NetworkRun(Path file, RunOptions options, PrintWriter out, PrintWriter err, InputStream commands) {
@@ -126,7 +127,7 @@ public final class NetworkRun {
                 ? startDistributed(definition, engine, trace == null ? counter : EventSink.both(counter, trace))
                 : startLocal(definition, engine);
         if (target == null) {
-            return 1;
+            return notStarted;
         }
         String name = publishedName(definition, file);
         Thread hook = stopOnCtrlC();
@@ -244,6 +245,7 @@ public final class NetworkRun {
                 err.flush();
                 network.close();
                 closeLogger(logger);
+                notStarted = 2;
                 return null;
             }
         }

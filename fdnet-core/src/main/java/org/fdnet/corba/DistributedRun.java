@@ -9,34 +9,52 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.TimeUnit;
 import org.fdnet.event.EventSink;
-import org.fdnet.event.client.CommitReport;
+import org.fdnet.event.RunIdentity;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.ModuleTree;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.corba.control.ControlPublication;
-import org.fdnet.corba.control.DistributedLiveNetwork;
-import org.fdnet.runtime.cli.ControlCommands;
-import org.fdnet.runtime.cli.ValueAssignment;
+import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.runtime.Placement;
+import org.fdnet.runtime.RuntimeOptions;
 
 /**
- * {@code fdnet run FILE} for a network whose nodes name other hosts: this process becomes a host itself
- * (for the {@code localhost} nodes), deploys every host's share through the naming service, prints what
- * happens to hosts and links, and removes the network from the hosts when it stops.
+ * A network deployed over its hosts: this process becomes a host itself (for the {@code localhost} nodes),
+ * deploys every host's share through the naming service — each host recording its part of the run — prints what
+ * happens to hosts and links, and removes the network from the hosts when it closes. The run's life around it
+ * (options, commands, status, summary) is {@code org.fdnet.run.NetworkRun}'s, as for a run on one host.
  */
-public final class DistributedRun {
-    /** What the command line gives a distributed run. */
-    public record Request(Path file, NetworkInfo definition, Duration duration, List<Path> allowedRoots,
-                          String namingCorbaloc, String localHostName, List<String> sets, List<String> loads,
-                          String loggerAddress) {
+public final class DistributedRun implements AutoCloseable {
+    /**
+     * What a distributed run needs: the network, where hosts register, this process's host name and engine
+     * options (worker threads, event sinks), who else hears host and link events ({@code events}), the logger the hosts record with ({@code null}: none but their own)
+     * and the logger's viewer address the control object tells attached tools.
+     */
+    public record Request(Path file, NetworkInfo definition, List<Path> allowedRoots, OrbSettings orbSettings,
+                          String localHostName, RuntimeOptions localOptions, EventSink events, String loggerAddress,
+                          String loggerViewerAddress) {
     }
 
-    private DistributedRun() {
+    private final Request request;
+    private final DeploymentPlan plan;
+    private final RunIdentity run;
+    private final HostProcess local;
+    private final NetworkDeployment deployment;
+    private final DistributedControl control;
+    private final long started;
+
+    private DistributedRun(Request request, DeploymentPlan plan, RunIdentity run, HostProcess local,
+                           NetworkDeployment deployment, long started) {
+        this.request = request;
+        this.plan = plan;
+        this.run = run;
+        this.local = local;
+        this.deployment = deployment;
+        this.started = started;
+        this.control = new DistributedControl(deployment);
+        CoordinatorServant.publish(local.orb(), control); // every host's Servants now see the whole network
     }
 
     /** Whether a node of a module loaded at start names a host other than this machine. */
@@ -55,168 +73,99 @@ public final class DistributedRun {
         return false;
     }
 
-    /** Runs until the duration ends or the process is interrupted; returns the exit code. */
-    public static int run(Request request, EventSink events, PrintWriter out, PrintWriter err) throws InterruptedException {
+    /**
+     * Deploys the network: its run is {@code identity} applied to the hosts it spans (and the {@code .fdn} as
+     * deployed: relative class paths made absolute).
+     *
+     * @throws DeploymentException naming the host that could not be started or set up; nothing is left running
+     */
+    public static DistributedRun start(Request request, RunIdentityMaker identity, PrintWriter out)
+            throws DeploymentException {
         NetworkInfo definition = withAbsolutePaths(request.definition(), request.file());
         List<Path> roots = new ArrayList<>(request.allowedRoots());
         roots.add(request.file().toAbsolutePath().getParent());
-        DeploymentPlan plan;
-        try {
-            plan = DeploymentPlan.of(definition, request.localHostName(), lowerCase(Placement.localNames()),
-                    Set.copyOf(request.loads()));
-        } catch (IllegalArgumentException e) {
-            err.println("--load: " + e.getMessage());
-            err.flush();
-            return 2;
-        }
-        OrbSettings settings = OrbSettings.defaults().withNaming(request.namingCorbaloc());
-        out.printf("distributing %s over hosts %s (naming %s; this process is host %s)%n",
-                definition.name() == null ? request.file() : definition.name(), plan.hosts(),
-                request.namingCorbaloc(), request.localHostName());
+        DeploymentPlan plan = DeploymentPlan.of(definition, request.localHostName(), lowerCase(Placement.localNames()),
+                Set.of());
+        RunIdentity run = identity.make(NetworkRepository.toText(definition), List.copyOf(plan.hosts()));
+        OrbSettings settings = request.orbSettings();
+        out.printf("distributing %s over hosts %s (naming %s; this process is host %s)%n", run.network(), plan.hosts(),
+                settings.namingReference(), request.localHostName());
         out.flush();
         HostProcess local;
+        RuntimeLocalNetwork engine = LocalNetworks.forHost(request.localHostName(), roots, request.localOptions());
         try {
-            local = HostProcess.start(request.localHostName(), settings,
-                    LocalNetworks.forHost(request.localHostName(), roots), new ClassPolicy(roots), LinkSettings.defaults());
+            local = HostProcess.start(request.localHostName(), settings, engine, new ClassPolicy(roots),
+                    LinkSettings.defaults());
         } catch (RuntimeException e) {
-            err.println(request.file() + ": cannot start this process's host: " + e.getMessage());
-            err.flush();
-            return 1;
+            engine.close();
+            throw new DeploymentException("cannot start this process's host " + request.localHostName() + ": "
+                    + e.getMessage(), e);
         }
         long started = System.nanoTime();
         NetworkDeployment deployment;
         try {
             deployment = NetworkDeployment.start(plan, HostDirectory.connect(local.orb()),
-                    Map.of(request.localHostName(), local.reference()), new PrintingListener(out, started), events,
-                    LinkSettings.defaults().window(), 10_000, 250, request.loggerAddress());
+                    Map.of(request.localHostName(), local.reference()), new PrintingListener(out, started),
+                    EventSink.both(request.events(), engine::record), LinkSettings.defaults().window(), 10_000, 250,
+                    new RunRecording(run, request.loggerAddress()));
         } catch (DeploymentException | HostUnreachableException e) {
-            err.println(request.file() + ": the network cannot be distributed: " + e.getMessage());
-            err.flush();
             local.close();
-            return 1;
+            throw new DeploymentException("the network cannot be distributed: " + e.getMessage(), e);
         }
-        CountDownLatch stop = new CountDownLatch(1);
-        Thread hook = new Thread(stop::countDown, "fdnet-run-stop");
-        Runtime.getRuntime().addShutdownHook(hook);
-        DistributedLiveNetwork live = null;
-        ControlPublication published = null;
-        try {
-            out.printf("running on %d hosts: %s; %d cross-host links%n", plan.hosts().size(), shares(plan),
-                    plan.links().size());
-            out.flush();
-            if (!applySets(request.sets(), plan, deployment, err)) {
-                return 2;
-            }
-            DistributedControl control = new DistributedControl(deployment);
-            CoordinatorServant.publish(local.orb(), control); // every host's Servants now see the whole network
-            live = new DistributedLiveNetwork(publishedName(request), control, deployment);
-            published = publishControl(live, local, out, err);
-            new ControlCommands(live, out).readFrom(System.in);
-            long end = request.duration() == null ? Long.MAX_VALUE : started + request.duration().toNanos();
-            while (System.nanoTime() < end) {
-                long wait = Math.min(TimeUnit.SECONDS.toNanos(1), end - System.nanoTime());
-                if (stop.await(Math.max(1, wait), TimeUnit.NANOSECONDS)) {
-                    break;
-                }
-                status(out, deployment, local, started);
-            }
-        } finally {
-            if (published != null) {
-                published.close("the network " + publishedName(request) + " stopped");
-            }
-            summary(out, deployment, local, started);
-            deployment.close();
-            local.close();
-            if (local.network() instanceof RuntimeLocalNetwork engine) {
-                engine.logger().ifPresent(c -> out.println("host " + request.localHostName() + ": "
-                        + CommitReport.of(c)));
-                out.flush();
-            }
-            try {
-                Runtime.getRuntime().removeShutdownHook(hook);
-            } catch (IllegalStateException shuttingDown) {
-                // Ctrl-C: the JVM is already stopping; the summary has been printed
-            }
-        }
-        return 0;
+        out.printf("running on %d hosts: %s; %d cross-host links%n", plan.hosts().size(), shares(plan),
+                plan.links().size());
+        out.flush();
+        return new DistributedRun(request, plan, run, local, deployment, started);
     }
 
-    private static String publishedName(Request request) {
-        return org.fdnet.runtime.cli.RunCommand.publishedName(request.definition(), request.file());
+    /** Makes a run's identity once the hosts are known. */
+    @FunctionalInterface
+    public interface RunIdentityMaker {
+        RunIdentity make(String definitionAsDeployed, List<String> hosts);
     }
 
-    /** Registers the run's control object in its naming service; a run that cannot still runs, and says so. */
-    private static ControlPublication publishControl(DistributedLiveNetwork live, HostProcess local, PrintWriter out,
-                                                     PrintWriter err) {
-        try {
-            ControlPublication p = ControlPublication.inNaming(live, local.orb());
-            out.println(p.announcement());
-            out.flush();
-            return p;
-        } catch (RuntimeException e) {
-            err.println("the control object is not published: " + e.getMessage());
-            err.flush();
-            return null;
-        }
+    public RunIdentity run() {
+        return run;
     }
 
-    private static boolean applySets(List<String> sets, DeploymentPlan plan, NetworkDeployment deployment,
-                                     PrintWriter err) {
-        for (String set : sets) {
-            ValueAssignment assignment;
-            try {
-                assignment = ValueAssignment.parse(set);
-            } catch (IllegalArgumentException e) {
-                err.println("--set " + set + ": " + e.getMessage());
-                err.flush();
-                return false;
-            }
-            NodeRef ref = assignment.data();
-            String host = plan.hosts().stream()
-                    .filter(h -> plan.shareOf(h).nodes().stream().anyMatch(p -> p.ref().equals(ref)))
-                    .findFirst().orElse(null);
-            if (host == null) {
-                err.println("--set " + set + ": no running Data " + ref);
-                err.flush();
-                return false;
-            }
-            try {
-                deployment.host(host).write(IdlMapping.id(ref), ValueCodec.encode(assignment.value()));
-            } catch (org.omg.CORBA.UserException | org.omg.CORBA.SystemException e) {
-                err.println("--set " + set + ": host " + host + " refused: "
-                        + (e instanceof org.fdnet.corba.idl.Refused r ? r.reason : e.toString()));
-                err.flush();
-                return false;
-            }
-        }
-        return true;
+    /** Changes across hosts, in two phases (the run's {@code --load}/{@code --set}/{@code --param} and commands). */
+    public DistributedControl control() {
+        return control;
     }
 
-    private static String shares(DeploymentPlan plan) {
-        List<String> parts = new ArrayList<>();
-        for (String h : plan.hosts()) {
-            parts.add(h + " (" + plan.shareOf(h).nodes().size() + " nodes, " + plan.shareOf(h).standIns().size()
-                    + " stand-ins)");
-        }
-        return String.join(", ", parts);
+    /** The deployment: hosts, links, the plan now. */
+    public NetworkDeployment deployment() {
+        return deployment;
     }
 
-    private static void status(PrintWriter out, NetworkDeployment d, HostProcess local, long started) {
+    /** The ORB of this process's host (a control object registers through it in the naming service). */
+    public OrbRuntime orb() {
+        return local.orb();
+    }
+
+    /** {@code HOST:PORT} of the viewer service of the logger the hosts record with, if given. */
+    public java.util.Optional<String> loggerViewerAddress() {
+        return java.util.Optional.ofNullable(request.loggerViewerAddress());
+    }
+
+    /** The run's status line: hosts lost, links broken, values through this process. */
+    public String status() {
         long sent = 0;
         long pending = 0;
         for (OutboundLink l : local.servant().outboundLinks()) {
             sent += l.acknowledged();
             pending += l.pending();
         }
-        out.printf(Locale.ROOT,
-                "[%6.1fs] hosts lost %s  links broken %d/%d  values here: received %,d, sent %,d (%,d waiting)%n",
-                (System.nanoTime() - started) / 1e9, d.lostHosts().isEmpty() ? "none" : d.lostHosts(),
-                d.brokenLinks().size(), d.plan().links().size(), local.servant().valuesReceived(), sent, pending);
-        out.flush();
+        return String.format(Locale.ROOT, "hosts lost %s  links broken %d/%d  values here: received %,d, sent %,d"
+                        + " (%,d waiting)", deployment.lostHosts().isEmpty() ? "none" : deployment.lostHosts(),
+                deployment.brokenLinks().size(), deployment.plan().links().size(), local.servant().valuesReceived(),
+                sent, pending);
     }
 
-    private static void summary(PrintWriter out, NetworkDeployment d, HostProcess local, long started) {
-        out.printf(Locale.ROOT, "%nsummary after %.1f s:%n", (System.nanoTime() - started) / 1e9);
+    /** Hosts, links and what went through this process's links. */
+    public void summary(PrintWriter out) {
+        NetworkDeployment d = deployment;
+        out.printf(Locale.ROOT, "hosts and links after %.1f s:%n", (System.nanoTime() - started) / 1e9);
         for (String h : d.plan().hosts()) {
             out.printf("  host %-16s %s%n", h, d.lostHosts().contains(h) ? "LOST" : "running");
         }
@@ -228,6 +177,35 @@ public final class DistributedRun {
             out.printf("  %s: %,d values acknowledged, %,d lost%n", l.description(), l.acknowledged(), l.lost());
         }
         out.flush();
+    }
+
+    /** This process's engine (its share of the network). */
+    public RuntimeLocalNetwork localEngine() {
+        return (RuntimeLocalNetwork) local.network();
+    }
+
+    /**
+     * Removes the network from every host, ends every host's recording of the run (each waits, bounded, for the
+     * logger's commits) and stops this process's host; returns what the logger committed, by host.
+     */
+    public Map<String, String> stop() {
+        deployment.close();
+        local.close();
+        return deployment.commitReports();
+    }
+
+    @Override
+    public void close() {
+        stop();
+    }
+
+    private static String shares(DeploymentPlan plan) {
+        List<String> parts = new ArrayList<>();
+        for (String h : plan.hosts()) {
+            parts.add(h + " (" + plan.shareOf(h).nodes().size() + " nodes, " + plan.shareOf(h).standIns().size()
+                    + " stand-ins)");
+        }
+        return String.join(", ", parts);
     }
 
     /** Relative class paths mean the network file's folder; a remote host needs them absolute. */

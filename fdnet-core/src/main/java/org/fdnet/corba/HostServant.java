@@ -15,6 +15,7 @@ import org.fdnet.corba.idl.NetworkListener;
 import org.fdnet.corba.idl.NodeId;
 import org.fdnet.corba.idl.NodeSpec;
 import org.fdnet.corba.idl.Refused;
+import org.fdnet.corba.idl.RunDescription;
 import org.fdnet.corba.idl.ShareChange;
 import org.fdnet.corba.idl.UnknownLink;
 import org.fdnet.corba.idl.UnknownNode;
@@ -114,13 +115,28 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     }
 
     @Override
-    public boolean useLogger(String address) throws Refused {
+    public boolean recordRun(String address, RunDescription run, long clockOffsetMicros) throws Refused {
         try {
-            return network.useLogger(address);
+            return network.recordRun(address, IdlMapping.run(run), clockOffsetMicros);
         } catch (IllegalArgumentException | UnsupportedOperationException e) {
-            LOG.warn("host {} refused to record with the logger at {}: {}", hostName, address, e.getMessage());
-            throw new Refused("host " + hostName + " cannot record with the logger at " + address + ": "
-                    + e.getMessage());
+            LOG.warn("host {} refused to record run {} with the logger at {}: {}", hostName, run.id, address,
+                    e.getMessage());
+            throw new Refused("host " + hostName + " cannot record run " + run.id + " with the logger at " + address
+                    + ": " + e.getMessage());
+        }
+    }
+
+    @Override
+    public long clockMicros() {
+        return System.currentTimeMillis() * 1000;
+    }
+
+    @Override
+    public String endRun(String id) {
+        try {
+            return network.endRun(java.util.UUID.fromString(id)).orElse("");
+        } catch (IllegalArgumentException e) {
+            return "";
         }
     }
 

@@ -2,10 +2,13 @@ package org.fdnet.corba;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.UUID;
+import org.fdnet.event.RunIdentity;
 import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.NodeId;
 import org.fdnet.corba.idl.NodeSpec;
 import org.fdnet.corba.idl.Param;
+import org.fdnet.corba.idl.RunDescription;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.ConnectionKind;
 import org.fdnet.netinfo.NodeInfo;
@@ -25,6 +28,18 @@ public final class IdlMapping {
 
     public static NodeRef ref(NodeId id) {
         return new NodeRef(id.moduleName, id.nodeName);
+    }
+
+    /** A run's identity as it crosses the IDL. */
+    public static RunDescription description(RunIdentity run) {
+        return new RunDescription(run.id().toString(), run.network(), run.definition(), run.sha256(),
+                run.startedMicros(), run.hosts().toArray(String[]::new));
+    }
+
+    /** @throws IllegalArgumentException when the id is not a UUID */
+    public static RunIdentity run(RunDescription d) {
+        return new RunIdentity(UUID.fromString(d.id), d.network, d.definition, d.sha256, d.startedMicros,
+                List.of(d.hosts));
     }
 
     /** The spec of {@code node} in {@code module}; the host is not sent: the receiving host is the place. */

@@ -3,6 +3,8 @@ package org.fdnet.corba;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.UUID;
+import org.fdnet.event.RunIdentity;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
@@ -77,15 +79,25 @@ public interface LocalNetwork {
     AutoCloseable observe(NodeRef data, ValueObserver observer);
 
     /**
-     * Records this host's events with the logger at {@code hostPort} from now on; {@code false} when the
-     * host already records with a logger (nothing changes).
+     * Records this host's events as its part of the network run {@code run}, with the logger at {@code hostPort}
+     * (or the host's own), this host's clock being {@code clockOffsetMicros} ahead of the coordinator's;
+     * {@code false} when nothing is recorded or {@code run} already is.
      *
      * @throws UnsupportedOperationException when this engine has no events to record
      * @throws IllegalArgumentException when {@code hostPort} is not {@code HOST:PORT}
      */
-    default boolean useLogger(String hostPort) {
+    default boolean recordRun(String hostPort, RunIdentity run, long clockOffsetMicros) {
         throw new UnsupportedOperationException("this host's engine (" + getClass().getSimpleName()
                 + ") records no events");
+    }
+
+    /** Ends the recording of {@code run}: what the logger committed, or empty when this host does not record it. */
+    default Optional<String> endRun(UUID run) {
+        return Optional.empty();
+    }
+
+    /** {@code ref} is about to be declared as a stand-in (a shadow of a Data homed on another host). */
+    default void expectStandIn(NodeRef ref) {
     }
 
     /**

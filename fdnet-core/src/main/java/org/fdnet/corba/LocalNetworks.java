@@ -15,8 +15,13 @@ public final class LocalNetworks {
      * {@code allowedPaths} only (the same rule {@link ClassPolicy} checks before a remote create).
      */
     public static RuntimeLocalNetwork forHost(String hostName, List<Path> allowedPaths) {
+        return forHost(hostName, allowedPaths, RuntimeOptions.defaults());
+    }
+
+    /** As above, with {@code options}' worker threads and event sinks (a run's own host: --workers, --trace). */
+    public static RuntimeLocalNetwork forHost(String hostName, List<Path> allowedPaths, RuntimeOptions options) {
         ClassLoadingPolicy policy = new ClassLoadingPolicy(allowedPaths, ClassPolicy.BUILT_IN_PACKAGES,
                 Path.of("").toAbsolutePath());
-        return RuntimeLocalNetwork.start(hostName, RuntimeOptions.defaults().classLoading(policy));
+        return RuntimeLocalNetwork.start(hostName, options.classLoading(policy));
     }
 }

@@ -60,7 +60,8 @@ public final class NetworkDeployment implements AutoCloseable {
     private final Map<String, Long> recoveryMillis = new ConcurrentHashMap<>();
     private final ScheduledExecutorService watcher;
 
-    private String loggerAddress; // set once, before the first share is deployed
+    private RunRecording recording; // set once, before the first share is deployed
+    private final Map<String, String> commitReports = new ConcurrentHashMap<>();
     private volatile NetworkCoordinator coordinator;
     /** Held by every change of the running network and while a lost host's share is re-created. */
     private final ReentrantLock changes = new ReentrantLock();
@@ -93,16 +94,16 @@ public final class NetworkDeployment implements AutoCloseable {
     }
 
     /**
-     * As above; when {@code loggerAddress} ({@code HOST:PORT}) is given, every host is told to record its
-     * events with that logger before its share is created (and again when it comes back after a restart),
-     * so the logger learns every node's name.
+     * As above; when {@code recording} is given, every host is told to record its events as its part of that run
+     * before its share is created (and again when it comes back after a restart, or joins), so the logger learns
+     * every node's name; {@link #close} ends every host's recording.
      */
     public static NetworkDeployment start(DeploymentPlan plan, HostDirectory directory, Map<String, Host> known,
                                           DeploymentListener listener, EventSink events, int window,
-                                          long hostWaitMillis, long pingMillis, String loggerAddress)
+                                          long hostWaitMillis, long pingMillis, RunRecording recording)
             throws DeploymentException {
         NetworkDeployment d = new NetworkDeployment(plan, directory, listener, events, window);
-        d.loggerAddress = loggerAddress;
+        d.recording = recording;
         d.hosts.putAll(known);
         try {
             d.resolveAll(hostWaitMillis);
@@ -164,8 +165,9 @@ public final class NetworkDeployment implements AutoCloseable {
 
     /** Tells a host of this network the logger to record with and the coordinator its Servants ask. */
     private void welcome(String hostName, Host host) throws Refused {
-        if (loggerAddress != null && host.useLogger(loggerAddress)) {
-            LOG.info("host {} records its events with the logger at {}", hostName, loggerAddress);
+        if (recording != null && host.recordRun(recording.loggerAddress(), IdlMapping.description(recording.run()),
+                ClockOffset.of(host))) {
+            LOG.info("host {} records its part of run {}", hostName, recording.run().id());
         }
         NetworkCoordinator c = coordinator;
         if (c != null) {
@@ -465,5 +467,32 @@ public final class NetworkDeployment implements AutoCloseable {
     public void close() {
         watcher.shutdownNow();
         undeploy();
+        endRecordings();
+    }
+
+    /** Each host's recording of the run ends: the host waits (bounded) for the logger's commits and says so. */
+    private void endRecordings() {
+        if (recording == null) {
+            return;
+        }
+        for (String name : plan.hosts()) {
+            Host h = hosts.get(name);
+            if (h == null || lostSince.containsKey(name)) {
+                continue;
+            }
+            try {
+                String report = h.endRun(recording.run().id().toString());
+                if (!report.isEmpty()) {
+                    commitReports.put(name, report);
+                }
+            } catch (SystemException e) {
+                LOG.warn("host {} did not end its recording of run {}: {}", name, recording.run().id(), e.toString());
+            }
+        }
+    }
+
+    /** After {@link #close}: what the logger committed of each host's part of the run, by host. */
+    public Map<String, String> commitReports() {
+        return Map.copyOf(commitReports);
     }
 }

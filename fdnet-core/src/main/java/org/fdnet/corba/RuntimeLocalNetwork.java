@@ -6,8 +6,12 @@ import java.util.List;
 import java.util.NoSuchElementException;
 import java.util.Optional;
 import java.util.Set;
+import java.util.UUID;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Consumer;
 import org.fdnet.event.ValueType;
-import org.fdnet.event.client.CommitReport;
+import org.fdnet.event.NetworkEvent;
+import org.fdnet.event.RunIdentity;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.netinfo.ConnectionInfo;
@@ -48,7 +52,10 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
     private final String hostName;
     private final RuntimeNetwork runtime;
     private final Controller controller;
-    private LoggerClient logger; // guarded by this
+    private final Set<NodeRef> standIns = ConcurrentHashMap.newKeySet();
+    private String ownLogger; // guarded by this
+    private volatile HostRecording recording; // changed under this
+    private volatile Consumer<String> runEnded = report -> { };
 
     private RuntimeLocalNetwork(String hostName, RuntimeNetwork runtime) {
         this.hostName = hostName;
@@ -67,26 +74,81 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
     }
 
     /**
-     * Sends every event of this host's engine from now on to the logger at {@code hostPort}, through a
-     * {@link LoggerClient} of its own (memory, journal, exactly-once), as core {@code fdnet host NAME}. A host
-     * records with one logger: when it already does, the call changes nothing and returns {@code false}.
+     * Records every network run this host serves with the logger at {@code hostPort} ({@code fdnet host --logger}),
+     * whatever address the run's coordinator hands over.
      *
      * @throws IllegalArgumentException when {@code hostPort} is not {@code HOST:PORT}
      */
+    public synchronized void recordWith(String hostPort) {
+        LoggerClientSettings.parseAddress(hostPort, coreName());
+        ownLogger = hostPort;
+    }
+
+    /**
+     * From now on records this host's events — less its stand-ins' — as its part of {@code run}, with this host's
+     * own logger or else the one at {@code hostPort}; a run recorded before ends first (its events committed).
+     * {@code false} when nothing is recorded (no logger at all) or {@code run} already is.
+     *
+     * @throws IllegalArgumentException when the address is not {@code HOST:PORT}
+     */
     @Override
-    public synchronized boolean useLogger(String hostPort) {
-        if (logger != null) {
+    public synchronized boolean recordRun(String hostPort, RunIdentity run, long clockOffsetMicros) {
+        String address = ownLogger != null ? ownLogger : hostPort;
+        if (address == null || address.isEmpty() || (recording != null && recording.run().id().equals(run.id()))) {
             return false;
         }
-        logger = new LoggerClient(LoggerClientSettings.parseAddress(hostPort, "fdnet host " + hostName));
-        runtime.addSink(logger);
-        LOG.info("host {} records its events with the logger at {} (run {})", hostName, hostPort, logger.run());
+        LoggerClientSettings settings = LoggerClientSettings.parseAddress(address, coreName());
+        if (recording != null) {
+            endRun(recording.run().id());
+        }
+        recording = new HostRecording(new LoggerClient(settings, run, hostName, clockOffsetMicros),
+                standIns::contains);
+        runtime.addSink(recording);
+        LOG.info("host {} records its part of {} run {} with the logger at {}", hostName, run.network(), run.id(),
+                address);
         return true;
     }
 
-    /** The client this host records with, if any (its status says what the logger committed). */
+    /** Ends the recording of {@code run} (bounded wait for the logger's commits); what was committed, if recorded. */
+    @Override
+    public synchronized Optional<String> endRun(UUID run) {
+        if (recording == null || !recording.run().id().equals(run)) {
+            return Optional.empty();
+        }
+        HostRecording ending = recording;
+        recording = null;
+        runtime.removeSink(ending);
+        String report = ending.end();
+        LOG.info("host {}: {} run {}: {}", hostName, ending.run().network(), run, report);
+        runEnded.accept(report);
+        return Optional.of(report);
+    }
+
+    /** Told what the logger committed each time a run's recording ends here (fdnet host prints it). */
+    public void onRunEnded(Consumer<String> listener) {
+        runEnded = listener;
+    }
+
+    /** The client recording this host's part of the current run, if any (its status says what is committed). */
     public synchronized Optional<LoggerClient> logger() {
-        return Optional.ofNullable(logger);
+        return Optional.ofNullable(recording).map(HostRecording::client);
+    }
+
+    /** Records {@code event} (a host or link event of the deployment) with this host's part of the current run. */
+    public void record(NetworkEvent event) {
+        HostRecording r = recording;
+        if (r != null) {
+            r.accept(event);
+        }
+    }
+
+    @Override
+    public void expectStandIn(NodeRef ref) {
+        standIns.add(ref);
+    }
+
+    private String coreName() {
+        return "fdnet host " + hostName;
     }
 
     @Override
@@ -174,6 +236,7 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
         if (runtime.readDefinition(d -> d.node(ref)) != null) {
             return; // already declared: several connections share one stand-in
         }
+        standIns.add(ref);
         apply("declare remote " + ref, n -> n.addNode(ref.module(), node));
     }
 
@@ -338,13 +401,12 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
     @Override
     public void close() {
         runtime.close();
-        LoggerClient client;
+        HostRecording last;
         synchronized (this) {
-            client = logger;
+            last = recording;
         }
-        if (client != null) {
-            client.close(); // bounded: waits for the logger's commits at most the client's flush timeout
-            LOG.info("host {}: {}", hostName, CommitReport.of(client));
+        if (last != null) {
+            endRun(last.run().id());
         }
     }
 }

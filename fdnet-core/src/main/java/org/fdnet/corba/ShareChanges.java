@@ -65,6 +65,9 @@ final class ShareChanges {
         for (NodeId n : change.destroy) {
             beforeDestroy.accept(IdlMapping.ref(n));
         }
+        for (StandInSpec s : change.standIns) {
+            network.expectStandIn(IdlMapping.ref(s.spec.id));
+        }
         try {
             network.reshape(describe(change), edit(change));
             return null;

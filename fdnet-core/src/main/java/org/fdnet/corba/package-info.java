@@ -44,7 +44,9 @@
  * </pre>
  * The run's control object (a running network reachable from tools: {@code fdnet control}, the editor's
  * {@code --attach}) is in {@code org.fdnet.corba.control}.
- * Logging: every host records its engine's events with the logger through its own LoggerClient
- * ({@code fdnet host --logger}, or the address {@code useLogger} hands over at deployment).
+ * Logging: every host records its engine's events, less its stand-ins', as its part of the one network run
+ * the coordinator hands over at deployment ({@code recordRun}: {@code RunIdentity} + logger address, or the host's
+ * own {@code fdnet host --logger}), through a {@link org.fdnet.corba.HostRecording} of its own; {@code endRun} at
+ * the end commits it. The run's life around a deployment is {@code org.fdnet.run}'s.
  */
 package org.fdnet.corba;

@@ -15,4 +15,21 @@ public interface EventSink extends AutoCloseable {
     @Override
     default void close() {
     }
+
+    /** One sink feeding two, in that order. */
+    static EventSink both(EventSink first, EventSink second) {
+        return new EventSink() {
+            @Override
+            public void accept(NetworkEvent event) {
+                first.accept(event);
+                second.accept(event);
+            }
+
+            @Override
+            public void flush() {
+                first.flush();
+                second.flush();
+            }
+        };
+    }
 }

@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Predicate;
 import java.util.regex.Matcher;
@@ -87,6 +88,98 @@ class DistributedRunWithLoggerTest {
                     .isGreaterThanOrEqualTo(2); // both lives of the crawler
             assertThat(database.fixture().count("SELECT count(*) - count(DISTINCT sourceid) FROM fdnet_node")).isZero();
         }
+    }
+
+    /**
+     * Issue #20's count: one network run in the database, its three hosts as three streams filed under it, each
+     * Data once (on its home host; no stand-in of it anywhere), every stream's rows exactly what its host says the
+     * logger committed, and the flyer's Map — made to grow with time through {@code --param} — stored once per
+     * value, in order.
+     */
+    @Test
+    void shouldStoreOneRunWithEveryValueOnceInOrderAndNoStandIns() throws Exception {
+        try (NetworkStateLogger logger = new NetworkStateLogger(database.fixture().loggerConfig())) {
+            logger.start();
+            long streamsBefore = database.fixture().count("SELECT coalesce(max(run_id), 0) FROM fdnet_run");
+            String loggerAddress = "127.0.0.1:" + logger.receiverPort();
+            int namingPort = FdnetChildProcess.freePort();
+            start("naming", List.of("naming", "--port", Integer.toString(namingPort)), "fdnet naming ready");
+            String naming = OrbSettings.namingCorbaloc(OrbSettings.LOOPBACK, namingPort);
+            FdnetChildProcess flyer = start("host flyer", List.of("host", "--name", "flyer", "--naming", naming),
+                    "fdnet host flyer ready");
+            FdnetChildProcess crawler = start("host crawler", List.of("host", "--name", "crawler", "--naming", naming),
+                    "fdnet host crawler ready");
+            FdnetChildProcess run = start("run two-robots", List.of("run", "../networks/two-robots.fdn", "--naming",
+                    naming, "--as", "operator-station", "--for", "6s", "--logger", loggerAddress,
+                    "--param", "Survey:expression=[t, t + 1, t + 2, t + 3]"), "running on 3 hosts");
+            assertThat(run.awaitExit(120_000)).as(String.join("\n", run.output())).isZero();
+            String runId = run.output().stream().map(RUN_STARTED::matcher).filter(Matcher::find)
+                    .map(m -> m.group(1)).findFirst().orElseThrow();
+
+            String streams = " FROM fdnet_run r JOIN fdnet_network_run n USING (network_run_id) WHERE n.run_uuid = '"
+                    + runId + "'";
+            // One run: every stream recorded since the test began (one per process) is filed under it.
+            assertThat(database.fixture().text("SELECT string_agg(DISTINCT coalesce(n.run_uuid::text, 'none'), ',')"
+                    + " FROM fdnet_run r LEFT JOIN fdnet_network_run n USING (network_run_id) WHERE r.run_id > "
+                    + streamsBefore)).isEqualTo(runId);
+            assertThat(database.fixture().text("SELECT n.network || ' ' || array_to_string(n.hosts, ',')" + streams
+                    + " LIMIT 1")).isEqualTo("two-robots flyer,crawler,operator-station");
+            assertThat(database.fixture().text("SELECT string_agg(r.host, ',' ORDER BY r.host)" + streams))
+                    .isEqualTo("crawler,flyer,operator-station");
+            // The coordinator measured each host's clock: one machine, so every offset is far below a second.
+            assertThat(database.fixture().count("SELECT max(abs(r.clock_offset))" + streams)).isLessThan(1_000_000);
+            // Each host's stream holds exactly what that host says the logger committed of its part. The --param
+            // re-made Survey on the flyer under the same node id: named twice, kept as one fdnet_node row.
+            Map<String, Long> renamed = Map.of("flyer", 1L, "crawler", 0L, "operator-station", 0L);
+            for (Map.Entry<String, Long> host : renamed.entrySet()) {
+                String stream = database.fixture().text("SELECT r.run_uuid::text" + streams + " AND r.host = '"
+                        + host.getKey() + "'");
+                assertThat(rowsOf(stream)).as("rows of host %s", host.getKey())
+                        .isEqualTo(reportedCount(run, "host " + host.getKey() + ": ") - host.getValue());
+            }
+            // Each Data is one node of the run, on its home host: the stand-ins (Map on the crawler, Heading and
+            // Certainty on the operator's station) are not recorded.
+            String nodes = "SELECT string_agg(x.node || '@' || r.host, ',' ORDER BY x.node) FROM fdnet_node x"
+                    + " JOIN fdnet_run r USING (run_id) JOIN fdnet_network_run n USING (network_run_id)"
+                    + " WHERE x.kind = 'data' AND n.run_uuid = '" + runId + "'";
+            assertThat(database.fixture().text(nodes)).isEqualTo("Certainty@crawler,Heading@crawler,Map@flyer");
+            // The Map values the new expression made grow with time: stored once each, in time order.
+            String ofData = "(SELECT x.sourceid FROM fdnet_node x JOIN fdnet_run r USING (run_id) JOIN fdnet_network_run n"
+                    + " USING (network_run_id) WHERE n.run_uuid = '" + runId + "' AND x.node = '";
+            List<Double> firsts = mapFirstElements(ofData + "Map')");
+            assertThat(firsts).as(database.fixture().text("SELECT string_agg(value, ' | ' ORDER BY time) FROM"
+                    + " datavalue_log WHERE sourceid = " + ofData + "Map')")).hasSizeGreaterThan(10);
+            for (int i = 1; i < firsts.size(); i++) {
+                assertThat(firsts.get(i)).as("Map value %d of %d", i, firsts.size()).isGreaterThan(firsts.get(i - 1));
+            }
+            for (String data : List.of("Map", "Heading", "Certainty")) {
+                String of = " FROM datavalue_log WHERE sourceid = " + ofData + data + "')";
+                assertThat(database.fixture().count("SELECT count(*)" + of)).as(data).isPositive()
+                        .isEqualTo(database.fixture().count("SELECT count(DISTINCT time)" + of));
+            }
+            flyer.stop(60_000);
+            crawler.stop(60_000);
+        }
+    }
+
+    private static final Pattern RUN_STARTED = Pattern.compile("run ([0-9a-f-]{36}) of two-robots started");
+
+    /** Map[0] of every Map value the --param expression wrote ([t, t+1, t+2, t+3]), in time order. */
+    private static List<Double> mapFirstElements(String mapSourceId) throws SQLException {
+        List<Double> firsts = new ArrayList<>();
+        try (java.sql.Connection c = database.fixture().target().open();
+             java.sql.Statement s = c.createStatement();
+             java.sql.ResultSet rs = s.executeQuery("SELECT value FROM datavalue_log WHERE sourceid = " + mapSourceId
+                     + " ORDER BY time")) {
+            while (rs.next()) {
+                String[] parts = rs.getString(1).split(",");
+                double first = Double.parseDouble(parts[0]);
+                if (parts.length == 4 && Math.abs(Double.parseDouble(parts[3]) - first - 3.0) < 0.01) { // t is read once per element
+                    firsts.add(first);
+                }
+            }
+        }
+        return firsts;
     }
 
     private FdnetChildProcess start(String label, List<String> args, String readyMarker) {

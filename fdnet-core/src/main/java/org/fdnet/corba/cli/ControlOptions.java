@@ -24,6 +24,19 @@ public final class ControlOptions {
     @Option(names = "--no-control", description = "do not publish the control object")
     boolean off;
 
+    /** Whether {@code --no-control} was given. */
+    public boolean off() {
+        return off;
+    }
+
+    /** The option that places the control object at a port or address, if given ({@code null}: neither). */
+    public String placement() {
+        if (port != 0) {
+            return "--control-port";
+        }
+        return OrbSettings.LOOPBACK.equals(host) ? null : "--control-host";
+    }
+
     /**
      * Publishes {@code network} and prints where; {@code null} with {@code --no-control}.
      *

@@ -1,22 +1,18 @@
 package org.fdnet.corba.cli;
 
-import java.io.PrintWriter;
-import java.nio.file.Path;
-import java.time.Duration;
-import java.util.List;
 import org.fdnet.corba.DistributedRun;
-import org.fdnet.event.EventSink;
+import org.fdnet.corba.OrbSettings;
 import org.fdnet.netinfo.NetworkInfo;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
- * The options {@code fdnet run} takes for networks whose nodes name other hosts, and the switch to the
- * distributed run. A network whose nodes all live on this machine runs as before.
+ * The options {@code fdnet run} takes for networks whose nodes name other hosts. A network whose nodes all live
+ * on this machine runs as before.
  */
 public final class DistributionOptions {
     @Mixin
-    NamingOptions naming;
+    NamingOptions naming = new NamingOptions();
 
     @Option(names = "--as", paramLabel = "HOST",
             description = "the host name of this process in a distributed run (default: run-PID)")
@@ -36,11 +32,18 @@ public final class DistributionOptions {
         return DistributedRun.spansHosts(definition);
     }
 
-    public int run(Path file, NetworkInfo definition, Duration duration, List<Path> allowedRoots, List<String> sets,
-                   List<String> loads, String loggerAddress, EventSink events, PrintWriter out, PrintWriter err)
-            throws InterruptedException {
-        String name = localHostName != null ? localHostName : "run-" + ProcessHandle.current().pid();
-        return DistributedRun.run(new DistributedRun.Request(file, definition, duration, allowedRoots,
-                naming.corbaloc(), name, sets, loads, loggerAddress), events, out, err);
+    /** The ORB settings of this process's host: naming service and listening address. */
+    public OrbSettings orbSettings() {
+        return naming.orbSettings();
+    }
+
+    /** This process's host name in a distributed run. */
+    public String localHostName() {
+        return localHostName != null ? localHostName : "run-" + ProcessHandle.current().pid();
+    }
+
+    /** Uses the naming service at {@code corbaloc} (what {@code --naming} sets). */
+    public void naming(String corbaloc) {
+        naming.corbaloc = corbaloc;
     }
 }

@@ -11,7 +11,6 @@ import org.fdnet.corba.LinkFaults;
 import org.fdnet.corba.LinkSettings;
 import org.fdnet.corba.LocalNetworks;
 import org.fdnet.corba.RuntimeLocalNetwork;
-import org.fdnet.event.client.CommitReport;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -57,8 +56,13 @@ public final class HostCommand implements Callable<Integer> {
                 LinkFaults.install(linkFaults);
             }
             if (logger != null) {
-                engine.useLogger(logger);
+                engine.recordWith(logger);
             }
+            // each network run this host served ends with what the logger committed of it (tests count it)
+            engine.onRunEnded(report -> {
+                System.out.println("fdnet host " + name + ": " + report);
+                System.out.flush();
+            });
             host = HostProcess.start(name, naming.orbSettings().withPort(port), engine, new ClassPolicy(allowedPaths),
                     LinkSettings.defaults());
         } catch (HostUnreachableException | IllegalArgumentException | IllegalStateException e) {
@@ -67,14 +71,7 @@ public final class HostCommand implements Callable<Integer> {
                     + (e instanceof HostUnreachableException ? " (is `fdnet naming` running there?)" : ""));
             return 1;
         }
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            host.close();
-            // the engine closed its logger client: say what the logger committed (tests count it)
-            engine.logger().ifPresent(c -> {
-                System.out.println("fdnet host " + name + ": " + CommitReport.of(c));
-                System.out.flush();
-            });
-        }, "fdnet-host-shutdown"));
+        Runtime.getRuntime().addShutdownHook(new Thread(host::close, "fdnet-host-shutdown"));
         System.out.println("fdnet host " + name + " ready (naming " + naming.corbaloc() + ")");
         System.out.flush();
         NamingCommand.awaitStop();

@@ -15,7 +15,7 @@ public final class NamingOptions {
 
     @Option(names = "--bind", description = "address this process listens on (default: ${DEFAULT-VALUE})",
             defaultValue = OrbSettings.LOOPBACK)
-    String bind;
+    String bind = OrbSettings.LOOPBACK; // also when made in code, not parsed (the editor's Run)
 
     @Mixin
     TlsOptions tls;

@@ -3,6 +3,7 @@ package org.fdnet.corba.control;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import org.fdnet.control.ControlledLiveNetwork;
@@ -32,10 +33,24 @@ public final class DistributedLiveNetwork extends ControlledLiveNetwork implemen
     private final Set<String> held = ConcurrentHashMap.newKeySet();
     private final Map<NodeRef, Value> lastRead = new ConcurrentHashMap<>();
 
+    private final Optional<String> loggerViewerAddress;
+
     public DistributedLiveNetwork(String name, DistributedControl control, NetworkDeployment deployment) {
+        this(name, control, deployment, Optional.empty());
+    }
+
+    /** {@code loggerViewerAddress}: {@code HOST:PORT} of the viewer service of the logger recording this run. */
+    public DistributedLiveNetwork(String name, DistributedControl control, NetworkDeployment deployment,
+                                  Optional<String> loggerViewerAddress) {
         super(name, control);
         this.control = control;
         this.deployment = deployment;
+        this.loggerViewerAddress = loggerViewerAddress;
+    }
+
+    @Override
+    public Optional<String> loggerViewerAddress() {
+        return loggerViewerAddress;
     }
 
     @Override

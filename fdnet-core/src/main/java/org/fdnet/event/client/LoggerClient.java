@@ -14,6 +14,7 @@ import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 import org.fdnet.event.EventSink;
 import org.fdnet.event.NetworkEvent;
+import org.fdnet.event.RunIdentity;
 import org.fdnet.event.wire.ErrorFrame;
 import org.fdnet.event.wire.EventCodec;
 import org.fdnet.event.wire.Frame;
@@ -23,6 +24,7 @@ import org.fdnet.event.wire.Hello;
 import org.fdnet.event.wire.MessageType;
 import org.fdnet.event.wire.Protocol;
 import org.fdnet.event.wire.ProtocolException;
+import org.fdnet.event.wire.RunFrame;
 import org.fdnet.tls.TransportSecurity;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -51,6 +53,7 @@ public final class LoggerClient implements EventSink {
 
     private final LoggerClientSettings settings;
     private final UUID run;
+    private final RunFrame networkRun; // null: a core that does not say which network run it records
     private final ReentrantLock lock = new ReentrantLock();
     private final Condition work = lock.newCondition();
     private final Condition acked = lock.newCondition();
@@ -73,8 +76,26 @@ public final class LoggerClient implements EventSink {
 
     /** A client for a given run id: a restarted producer that must resume its run passes the same id. */
     public LoggerClient(LoggerClientSettings settings, UUID run) {
+        this(settings, run, null);
+    }
+
+    /**
+     * A client recording {@code host}'s part of the network run {@code networkRun}: the logger files every event
+     * of this client under that run, with the host beside it.
+     */
+    public LoggerClient(LoggerClientSettings settings, RunIdentity networkRun, String host) {
+        this(settings, networkRun, host, 0);
+    }
+
+    /** As above, for a host whose clock is {@code clockOffsetMicros} ahead of the run's coordinator's. */
+    public LoggerClient(LoggerClientSettings settings, RunIdentity networkRun, String host, long clockOffsetMicros) {
+        this(settings, UUID.randomUUID(), new RunFrame(networkRun, host, clockOffsetMicros));
+    }
+
+    private LoggerClient(LoggerClientSettings settings, UUID run, RunFrame networkRun) {
         this.settings = settings;
         this.run = run;
+        this.networkRun = networkRun;
         this.journal = new SpillJournal(settings.journalDirectory(), settings.journalBytes());
         this.sender = new Thread(this::sendLoop, "fdnet-logger-client");
         sender.setDaemon(true);
@@ -83,6 +104,11 @@ public final class LoggerClient implements EventSink {
 
     public UUID run() {
         return run;
+    }
+
+    /** The network run this client records a part of, or {@code null} when it does not say. */
+    public RunIdentity networkRun() {
+        return networkRun == null ? null : networkRun.run();
     }
 
     @Override
@@ -245,6 +271,11 @@ public final class LoggerClient implements EventSink {
         }
         welcome.getShort();
         long committed = welcome.getLong();
+        if (networkRun != null) {
+            networkRun.write(w);
+            w.writeTo(out);
+            out.flush();
+        }
         resumeAfter(committed);
         Thread ackReader = new Thread(() -> readAcks(in), "fdnet-logger-client-acks");
         ackReader.setDaemon(true);

@@ -24,6 +24,7 @@ import org.fdnet.event.wire.FrameWriter;
 import org.fdnet.event.wire.Hello;
 import org.fdnet.event.wire.HistoryColumns;
 import org.fdnet.event.wire.LoggedNode;
+import org.fdnet.event.wire.LoggedRun;
 import org.fdnet.event.wire.MessageType;
 import org.fdnet.event.wire.Protocol;
 import org.fdnet.event.wire.ProtocolException;
@@ -97,6 +98,15 @@ public final class ViewerClient implements AutoCloseable {
         List<LoggedNode> nodes = new ArrayList<>(items.size());
         items.forEach(o -> nodes.add((LoggedNode) o));
         return nodes;
+    }
+
+    /** Every stream of events the logger holds, with the network run each belongs to. */
+    public List<LoggedRun> runs() throws IOException {
+        int id = requests.incrementAndGet();
+        List<Object> items = call(id, new Request(null), w -> w.begin(MessageType.LIST_RUNS).putInt(id));
+        List<LoggedRun> runs = new ArrayList<>(items.size());
+        items.forEach(o -> runs.add((LoggedRun) o));
+        return runs;
     }
 
     /** Every event of the nodes with {@code from <= time <= to}, in time order (cache and database merged). */
@@ -224,6 +234,19 @@ public final class ViewerClient implements AutoCloseable {
                     LoggedNode node = LoggedNode.read(f);
                     if (r != null) {
                         r.items.add(node);
+                    }
+                }
+                if (r != null) {
+                    r.done.complete(r.items);
+                }
+            }
+            case RUN_LIST -> {
+                Request r = open.get(f.getInt());
+                int n = f.getCount(LoggedRun.MIN_BYTES);
+                for (int i = 0; i < n; i++) {
+                    LoggedRun run = LoggedRun.read(f);
+                    if (r != null) {
+                        r.items.add(run);
                     }
                 }
                 if (r != null) {

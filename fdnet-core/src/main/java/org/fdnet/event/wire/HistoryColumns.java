@@ -165,6 +165,13 @@ public final class HistoryColumns {
         return size;
     }
 
+    /** Moves each event's time back by its source's offset (a viewer putting every host on one time axis). */
+    public void shiftTimes(java.util.function.IntToLongFunction offsetOfSource) {
+        for (int i = 0; i < size; i++) {
+            times[i] -= offsetOfSource.applyAsLong(sources[i]);
+        }
+    }
+
     public long time(int i) {
         return times[check(i)];
     }

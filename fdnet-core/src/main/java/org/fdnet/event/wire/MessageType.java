@@ -12,6 +12,8 @@ public enum MessageType {
     EVENTS(10),
     /** logger → core: every event of the run up to this sequence number is committed. */
     ACK(11),
+    /** core → logger, once per connection right after WELCOME: the network run and host its events belong to. */
+    RUN(12),
     /** viewer → logger: request id, node ids, from, to. */
     HISTORY(20),
     /** logger → viewer: request id, events (several chunks per request). */
@@ -32,7 +34,11 @@ public enum MessageType {
      * viewer → logger: as {@link #HISTORY}; the answer's events may come as numbers ({@link EventCodec#writeNumeric}):
      * a plot's history without text to parse.
      */
-    HISTORY_NUMBERS(28);
+    HISTORY_NUMBERS(28),
+    /** viewer → logger: request id; which streams the logger holds and the network runs they belong to. */
+    LIST_RUNS(29),
+    /** logger → viewer: request id, streams ({@link LoggedRun}). */
+    RUN_LIST(30);
 
     private final int code;
 

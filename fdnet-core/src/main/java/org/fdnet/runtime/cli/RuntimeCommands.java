@@ -3,11 +3,11 @@ package org.fdnet.runtime.cli;
 import java.util.List;
 import org.fdnet.cli.CommandProvider;
 
-/** Adds {@code fdnet run} and {@code fdnet bench core} to the command line. */
+/** Adds {@code fdnet bench core} to the command line ({@code fdnet run} is {@code org.fdnet.run}'s). */
 public final class RuntimeCommands implements CommandProvider {
     @Override
     public List<Object> commands() {
-        return List.of(new RunCommand());
+        return List.of();
     }
 
     @Override

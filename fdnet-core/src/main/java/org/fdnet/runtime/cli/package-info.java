@@ -1,10 +1,9 @@
 /**
- * The runtime's commands, added to {@code fdnet} through {@link org.fdnet.cli.CommandProvider}:
- * {@code fdnet run FILE} and the benchmark {@code fdnet bench core}.
+ * The runtime's command-line pieces: {@code fdnet bench core}, the standard-input commands of a running network
+ * ({@link org.fdnet.runtime.cli.ControlCommands}), the {@code --set} and duration parsers, and the simulated-plant
+ * seam. {@code fdnet run} itself is {@code org.fdnet.run}'s, which uses them.
  *
  * <pre>
- *   fdnet run FILE ──▶ NetworkRepository.load ──▶ RuntimeNetwork.start ──▶ --load / --set / --param
- *        └── status line each second (firings, values, events, failed) ──▶ summary ──▶ close
  *   stdin "hold Walk" ──▶ ControlCommands ──▶ NetworkControl (the Controller, or DistributedControl) ──▶ "ok: …"
  * </pre>
  */

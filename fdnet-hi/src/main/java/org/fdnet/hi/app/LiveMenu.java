@@ -9,7 +9,11 @@ import javax.swing.JMenu;
 import javax.swing.JOptionPane;
 import javax.swing.SwingUtilities;
 import org.fdnet.control.LiveNetwork;
+import java.nio.file.Path;
+import org.fdnet.corba.DistributedRun;
 import org.fdnet.hi.live.DeployPreviewDialog;
+import org.fdnet.hi.live.EditorRun;
+import org.fdnet.hi.live.RunChoice;
 import org.fdnet.hi.live.LiveSession;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
@@ -19,7 +23,8 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Live: attach to a running network and detach; collect changes and deploy them through the preview (also from
+ * Live: run the open network (on this machine, over its hosts, or on the simulated RoQ) and stop it; attach to a
+ * running network and detach; collect changes and deploy them through the preview (also from
  * a network edited offline); plot the selected Datas in the viewer; save the running network with what it
  * built by itself.
  */
@@ -36,11 +41,17 @@ final class LiveMenu {
     private final Action discard;
     private final Action plot;
     private final Action saveRunning;
+    private final Action runNetwork;
+    private final Action stopNetwork;
     private String loggerAddress = DEFAULT_LOGGER;
+    private RunChoice lastChoice = RunChoice.thisMachine();
+    private EditorRun running; // the run started here, until Stop
 
     LiveMenu(HiWindow window) {
         this.window = window;
         menu.setName("menu.live");
+        runNetwork = MenuItems.action("Run Open Network…", "control shift R", this::askAndRun);
+        stopNetwork = MenuItems.action("Stop Network", null, this::stop);
         attach = MenuItems.action("Attach to Running Network…", "control shift A", this::attach);
         detach = MenuItems.action("Detach", null, () -> window.live().close());
         deploy = MenuItems.action("Deploy to Running Network…", "control shift D", this::deploy);
@@ -56,6 +67,9 @@ final class LiveMenu {
         saveRunning = MenuItems.action("Save Running Network As…", null, this::saveRunning);
         collect.setName("live.collect");
         collect.addActionListener(e -> toggleCollect());
+        menu.add(runNetwork).setName("live.run");
+        menu.add(stopNetwork).setName("live.stop");
+        menu.addSeparator();
         menu.add(attach).setName("live.attach");
         menu.add(detach).setName("live.detach");
         menu.addSeparator();
@@ -74,6 +88,8 @@ final class LiveMenu {
     void refresh() {
         LiveSession live = window.live();
         boolean open = window.current() != null;
+        runNetwork.setEnabled(running == null && open && window.current().file() != null);
+        stopNetwork.setEnabled(running != null);
         attach.setEnabled(live == null);
         detach.setEnabled(live != null);
         collect.setEnabled(live != null);
@@ -83,6 +99,85 @@ final class LiveMenu {
         discard.setEnabled(live != null && live.collecting());
         plot.setEnabled(open);
         saveRunning.setEnabled(live != null);
+    }
+
+    /** Run: where (a dialog), then {@link #run}. The network runs from its file, so it must be saved. */
+    private void askAndRun() {
+        OpenNetwork open = window.current();
+        if (open.unsaved()) {
+            window.status().error("Save the network first: it runs from its file");
+            return;
+        }
+        RunChoice choice = RunNetworkDialog.ask(window, open.file().getFileName().toString(),
+                DistributedRun.spansHosts(open.editor().network()), lastChoice);
+        if (choice != null) {
+            lastChoice = choice;
+            run(choice);
+        }
+    }
+
+    /** Starts the open network's file where {@code choice} says and attaches to it as soon as it runs. */
+    void run(RunChoice choice) {
+        Path file = window.current().file();
+        window.status().info("Starting " + file.getFileName() + " " + choice.describe() + "…");
+        runNetwork.setEnabled(false);
+        Thread starter = new Thread(() -> {
+            try {
+                EditorRun started = EditorRun.start(file, choice, 120_000);
+                SwingUtilities.invokeLater(() -> {
+                    running = started;
+                    if (window.attach(started.live(), false)) {
+                        window.status().info("Running " + started.live().name() + " " + choice.describe()
+                                + "; Live → Stop Network ends it");
+                    }
+                    refresh();
+                });
+            } catch (IllegalStateException | InterruptedException e) {
+                LOG.warn("{} did not start {}", file, choice.describe(), e);
+                SwingUtilities.invokeLater(() -> {
+                    window.status().error("Cannot run " + file.getFileName() + " " + choice.describe() + ": "
+                            + e.getMessage());
+                    refresh();
+                });
+            }
+        }, "fdnet-hi-run-start");
+        starter.setDaemon(true);
+        starter.start();
+    }
+
+    /** Stop: ends every host's part of the run started here, commits its events, and goes offline. */
+    void stop() {
+        EditorRun stopping = running;
+        if (stopping == null) {
+            return;
+        }
+        running = null;
+        stopNetwork.setEnabled(false);
+        window.status().info("Stopping " + stopping.live().name() + "…");
+        Thread stopper = new Thread(() -> {
+            int exit;
+            try {
+                exit = stopping.stop();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                exit = -1;
+            }
+            int code = exit;
+            SwingUtilities.invokeLater(() -> {
+                if (window.live() != null) {
+                    window.live().close();
+                }
+                window.status().info("Stopped " + stopping.live().name() + (code == 0 ? "" : " (exit " + code + ")"));
+                refresh();
+            });
+        }, "fdnet-hi-run-stop");
+        stopper.setDaemon(true);
+        stopper.start();
+    }
+
+    /** The run started from this menu, or {@code null}. */
+    EditorRun running() {
+        return running;
     }
 
     private void attach() {

@@ -14,6 +14,7 @@ import org.fdnet.event.wire.Frame;
 import org.fdnet.event.wire.FrameReader;
 import org.fdnet.event.wire.Hello;
 import org.fdnet.event.wire.MessageType;
+import org.fdnet.event.wire.RunFrame;
 import org.fdnet.event.wire.Protocol;
 import org.fdnet.event.wire.ProtocolException;
 import org.fdnet.logger.cache.CachedEvent;
@@ -130,8 +131,12 @@ final class ReceiverConnection extends Connection {
                 return;
             }
             frames++;
+            if (f.type() == MessageType.RUN) {
+                joinNetworkRun(RunFrame.read(f));
+                continue;
+            }
             if (f.type() != MessageType.EVENTS) {
-                throw new ProtocolException("a core may only send EVENTS after the handshake, got " + f.type());
+                throw new ProtocolException("a core may only send RUN and EVENTS after the handshake, got " + f.type());
             }
             long firstSeq = f.getLong();
             int count = f.getCount(EventCodec.MIN_EVENT_BYTES);
@@ -146,6 +151,18 @@ final class ReceiverConnection extends Connection {
             f.rewind(events);
             take(f, firstSeq, count);
         }
+    }
+
+    /** Files this connection's run under the network run the core names (idempotent: a reconnect says it again). */
+    private void joinNetworkRun(RunFrame part) throws IOException {
+        try {
+            directory.joinNetworkRun(run, part);
+        } catch (SQLException e) {
+            throw new IOException("cannot record that run " + run.uuid() + " is host " + part.host() + " of network run "
+                    + part.run().id() + ": " + e.getMessage(), e);
+        }
+        LOG.info("core {}: run {} is host {} of {} run {}", describe(), run.uuid(), part.host(), part.run().network(),
+                part.run().id());
     }
 
     /**

@@ -12,6 +12,7 @@ import org.fdnet.event.wire.FrameReader;
 import org.fdnet.event.wire.FrameWriter;
 import org.fdnet.event.wire.Hello;
 import org.fdnet.event.wire.LoggedNode;
+import org.fdnet.event.wire.LoggedRun;
 import org.fdnet.event.wire.MessageType;
 import org.fdnet.event.wire.Protocol;
 import org.fdnet.event.wire.ProtocolException;
@@ -58,6 +59,11 @@ final class SenderConnection extends Connection {
             frames++;
             switch (f.type()) {
                 case LIST_NODES -> listNodes(f.getInt(), f.getString());
+                case LIST_RUNS -> {
+                    int id = f.getInt();
+                    f.expectEnd();
+                    listRuns(id);
+                }
                 case HISTORY, HISTORY_NUMBERS -> {
                     int id = f.getInt();
                     int[] nodes = nodeIds(f);
@@ -105,6 +111,22 @@ final class SenderConnection extends Connection {
             }
         }
         return ids;
+    }
+
+    /** The streams and their network runs, from the database; none (and a warning) while it is unavailable. */
+    private void listRuns(int id) throws IOException {
+        List<LoggedRun> runs;
+        try {
+            runs = viewers.directory().runs();
+        } catch (SQLException e) {
+            LOG.warn("viewer {}: cannot list the runs, the database is unavailable: {}", describe(), e.getMessage());
+            runs = List.of();
+        }
+        List<LoggedRun> answer = runs;
+        send(w -> {
+            w.begin(MessageType.RUN_LIST).putInt(id).putInt(answer.size());
+            answer.forEach(r -> r.write(w));
+        });
     }
 
     private void listNodes(int id, String filter) throws IOException {

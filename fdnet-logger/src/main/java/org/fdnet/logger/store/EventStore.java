@@ -2,6 +2,9 @@ package org.fdnet.logger.store;
 
 import java.sql.Array;
 import java.sql.Connection;
+import org.fdnet.event.RunIdentity;
+import org.fdnet.event.wire.LoggedRun;
+import org.fdnet.event.wire.RunFrame;
 import java.sql.PreparedStatement;
 import java.sql.ResultSet;
 import java.sql.SQLException;
@@ -338,6 +341,49 @@ public final class EventStore implements AutoCloseable {
         } finally {
             pool.giveBack(c, broken);
         }
+    }
+
+    /**
+     * Files the stream {@code runId} under the network run {@code part.run()} (made on its first mention) as
+     * host {@code part.host()}; saying it again changes nothing.
+     */
+    public void joinNetworkRun(int runId, RunFrame part) throws SQLException {
+        RunIdentity r = part.run();
+        Connection c = pool.borrow();
+        boolean broken = true;
+        try (PreparedStatement ins = c.prepareStatement("INSERT INTO fdnet_network_run (run_uuid, network, definition,"
+                + " definition_sha256, started, hosts) VALUES (?, ?, ?, ?, ?, ?) ON CONFLICT (run_uuid) DO NOTHING");
+             PreparedStatement upd = c.prepareStatement("UPDATE fdnet_run SET host = ?, clock_offset = ?, network_run_id ="
+                     + " (SELECT network_run_id FROM fdnet_network_run WHERE run_uuid = ?) WHERE run_id = ?")) {
+            ins.setObject(1, r.id());
+            ins.setString(2, r.network());
+            ins.setString(3, r.definition());
+            ins.setString(4, r.sha256());
+            ins.setLong(5, r.startedMicros());
+            ins.setArray(6, c.createArrayOf("text", r.hosts().toArray()));
+            ins.executeUpdate();
+            upd.setString(1, part.host());
+            upd.setLong(2, part.clockOffsetMicros());
+            upd.setObject(3, r.id());
+            upd.setInt(4, runId);
+            upd.executeUpdate();
+            broken = false;
+        } finally {
+            pool.giveBack(c, broken);
+        }
+    }
+
+    /**
+     * Every stream (fdnet_run row), oldest first, with its network run; a stream of schema 1 or of a core that
+     * named no run stands for itself (network run 0, named by its core, started when first seen, one host).
+     */
+    public List<LoggedRun> loadRuns() throws SQLException {
+        return query("SELECT r.run_id, coalesce(n.network_run_id, 0), coalesce(n.network, r.core_name),"
+                + " coalesce(r.host, r.core_name), coalesce(n.started, (extract(epoch FROM r.first_seen) * 1000000)::bigint),"
+                + " coalesce(cardinality(n.hosts), 1), r.clock_offset FROM fdnet_run r"
+                + " LEFT JOIN fdnet_network_run n USING (network_run_id) ORDER BY r.run_id",
+                rs -> new LoggedRun(rs.getInt(1), rs.getInt(2), rs.getString(3), rs.getString(4), rs.getLong(5),
+                        rs.getInt(6), rs.getLong(7)));
     }
 
     public List<NodeMapping> loadMappings(int runId) throws SQLException {

@@ -10,7 +10,8 @@ import java.sql.Statement;
  * nodes: a core's node ids are only unique within one run, so each (run, core-local id) gets a global
  * {@code sourceid} from blocks of {@code fdnet_sourceid_block}, and the event tables' keys never collide
  * across runs. {@code fdnet_run.committed_seq} is updated in the same transaction as the events, which is
- * what makes delivery exactly-once.
+ * what makes delivery exactly-once. {@code fdnet_network_run} is one run of a network, whatever the number of
+ * hosts (cores) that record it; {@link #create} also migrates a database made before it (nothing is dropped).
  */
 public final class Schema {
     /** Global source ids are reserved this many at a time. */
@@ -30,6 +31,19 @@ public final class Schema {
                 + " run_id integer NOT NULL REFERENCES fdnet_run (run_id), local_id integer NOT NULL,"
                 + " kind text, module text, node text, named_at bigint, UNIQUE (run_id, local_id))",
         "CREATE SEQUENCE IF NOT EXISTS fdnet_sourceid_block INCREMENT BY " + SOURCE_BLOCK + " START WITH 1",
+        // Schema 2 (issue #20): one network run over several hosts. Each fdnet_run row is one core's stream of
+        // events; the streams of one network run (one per host) point at its fdnet_network_run row. Added in
+        // place, so a database of schema 1 keeps every row: its streams have no network run (each is a run of
+        // its own, named by its core_name) and no host.
+        "CREATE TABLE IF NOT EXISTS fdnet_network_run (network_run_id serial PRIMARY KEY,"
+                + " run_uuid uuid NOT NULL UNIQUE, network text NOT NULL, definition text NOT NULL,"
+                + " definition_sha256 text NOT NULL, started bigint NOT NULL, hosts text[] NOT NULL)",
+        "ALTER TABLE fdnet_run ADD COLUMN IF NOT EXISTS network_run_id integer"
+                + " REFERENCES fdnet_network_run (network_run_id)",
+        "ALTER TABLE fdnet_run ADD COLUMN IF NOT EXISTS host text",
+        // µs the host's clock is ahead of the run's coordinator's (measured at deployment): time - clock_offset
+        // puts every host's events on the coordinator's time axis
+        "ALTER TABLE fdnet_run ADD COLUMN IF NOT EXISTS clock_offset bigint NOT NULL DEFAULT 0",
     };
 
     private Schema() {

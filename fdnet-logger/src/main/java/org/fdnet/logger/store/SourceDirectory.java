@@ -9,6 +9,8 @@ import java.util.Map;
 import java.util.UUID;
 import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.event.wire.LoggedNode;
+import org.fdnet.event.wire.LoggedRun;
+import org.fdnet.event.wire.RunFrame;
 import org.fdnet.logger.cache.RunProgress;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
@@ -75,6 +77,16 @@ public final class SourceDirectory {
             runs.put(uuid, run);
             return run;
         }
+    }
+
+    /** Every stream the database holds, with its network run (see {@link EventStore#loadRuns}). */
+    public List<LoggedRun> runs() throws SQLException {
+        return store.loadRuns();
+    }
+
+    /** Records that {@code run} is host {@code part.host()} of the network run {@code part.run()}. */
+    public void joinNetworkRun(RunProgress run, RunFrame part) throws SQLException {
+        store.joinNetworkRun(run.runId(), part);
     }
 
     /** The global id of a run's local node id; new ids come from a reserved block (the database when empty). */

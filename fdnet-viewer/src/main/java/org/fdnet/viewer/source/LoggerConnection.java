@@ -3,6 +3,10 @@ package org.fdnet.viewer.source;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.HashMap;
+import java.util.concurrent.ConcurrentHashMap;
+import org.fdnet.event.DataValueEvent;
+import org.fdnet.event.wire.LoggedRun;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
@@ -29,6 +33,8 @@ public final class LoggerConnection implements AutoCloseable {
     private final String address;
     private final ViewerClient client;
     private final PlotData live;
+    private final Map<Integer, Long> offsetOfStream = new ConcurrentHashMap<>();
+    private final Map<Integer, Long> offsetOfSource = new ConcurrentHashMap<>();
 
     /** Connects to {@code host:port}; live events of watched nodes go to {@code live}. */
     public LoggerConnection(String address, PlotData live) throws IOException {
@@ -51,8 +57,9 @@ public final class LoggerConnection implements AutoCloseable {
         }
         try {
             client = new ViewerClient(address.substring(0, colon), port, "fdnet viewer", e -> {
-                live.accept(e);
-                tap.accept(e);
+                NetworkEvent onAxis = shift(e);
+                live.accept(onAxis);
+                tap.accept(onAxis);
             });
         } catch (IOException e) {
             throw new IOException("cannot reach the logger's viewer service at " + address + ": " + e.getMessage(), e);
@@ -74,16 +81,51 @@ public final class LoggerConnection implements AutoCloseable {
         return out;
     }
 
-    /** The runs the logger knows (its database and cache), newest first, each with its Data nodes. */
+    /**
+     * The runs the logger knows (its database and cache), newest first, each with every host's Data nodes: the
+     * streams of one network run are one run. Learns each stream's clock offset on the way (see {@link #shift}).
+     */
     public List<RunInfo> runs() throws IOException {
-        Map<Integer, List<LoggedNode>> byRun = new LinkedHashMap<>();
+        Map<Integer, LoggedRun> streams = new HashMap<>();
+        for (LoggedRun r : client.runs()) {
+            streams.put(r.streamId(), r);
+            offsetOfStream.put(r.streamId(), r.clockOffsetMicros());
+        }
+        Map<String, List<LoggedNode>> byRun = new LinkedHashMap<>();
         for (LoggedNode n : dataNodes()) {
-            byRun.computeIfAbsent(n.runId(), r -> new ArrayList<>()).add(n);
+            LoggedRun s = streams.get(n.runId());
+            String key = s == null || s.networkRunId() == 0 ? "stream " + n.runId() : "run " + s.networkRunId();
+            byRun.computeIfAbsent(key, k -> new ArrayList<>()).add(n);
+            offsetOfSource.put(n.sourceId(), offsetOfStream.getOrDefault(n.runId(), 0L));
         }
         List<RunInfo> runs = new ArrayList<>();
-        byRun.forEach((run, nodes) -> runs.add(new RunInfo(run, nodes)));
+        byRun.forEach((key, nodes) -> {
+            int first = nodes.stream().mapToInt(LoggedNode::runId).min().orElseThrow();
+            LoggedRun s = streams.get(first);
+            Map<Integer, String> hosts = new HashMap<>();
+            nodes.forEach(n -> {
+                LoggedRun of = streams.get(n.runId());
+                if (of != null) {
+                    hosts.put(n.runId(), of.host());
+                }
+            });
+            runs.add(s == null ? RunInfo.ofStream(first, nodes)
+                    : new RunInfo(first, s.network(), s.hostCount(), s.startedMicros(), nodes, hosts));
+        });
         runs.sort((a, b) -> Integer.compare(b.runId(), a.runId()));
         return runs;
+    }
+
+    /**
+     * The event on the run's coordinator's time axis: its time less its host's clock offset (as the coordinator
+     * measured it at deployment, see docs/viewer.md). Only Data values are plotted; other events pass unchanged.
+     */
+    public NetworkEvent shift(NetworkEvent e) {
+        long offset = offsetOfSource.getOrDefault(e.sourceId(), 0L);
+        if (offset == 0 || !(e instanceof DataValueEvent v)) {
+            return e;
+        }
+        return new DataValueEvent(v.sourceId(), v.time() - offset, v.type(), v.value());
     }
 
     /**
@@ -103,6 +145,9 @@ public final class LoggerConnection implements AutoCloseable {
 
     /** Tracks the nodes in the live data and starts monitoring them; answers the resolved nodes. */
     public List<LoggedNode> watch(List<NodeSelection> selections) throws IOException {
+        if (offsetOfStream.isEmpty()) {
+            runs(); // learn the hosts' clock offsets before the first live value
+        }
         List<LoggedNode> nodes = new ArrayList<>();
         for (NodeSelection s : selections) {
             LoggedNode n = resolve(s);
@@ -124,13 +169,17 @@ public final class LoggerConnection implements AutoCloseable {
     /** Every value of the sources with {@code from <= time <= to} (µs), in time order, into {@code into}. */
     public int loadHistory(int[] sourceIds, long from, long to, PlotData into) throws IOException {
         HistoryColumns events = client.historyColumns(sourceIds, from, to); // numbers without an object each
+        events.shiftTimes(source -> offsetOfSource.getOrDefault(source, 0L));
         into.accept(events);
         return events.size();
     }
 
     /** The raw history of the sources (time order), for replay. */
     public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws IOException {
-        return client.history(sourceIds, from, to);
+        List<NetworkEvent> events = new ArrayList<>(client.history(sourceIds, from, to));
+        events.replaceAll(this::shift);
+        events.sort(java.util.Comparator.comparingLong(NetworkEvent::time)); // hosts' offsets may reorder a little
+        return events;
     }
 
     /** How a node is named in legends: {@code Module/Node}. */

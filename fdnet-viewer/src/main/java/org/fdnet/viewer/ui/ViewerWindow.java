@@ -58,6 +58,7 @@ public final class ViewerWindow extends JFrame {
     private final JList<LoggedNode> nodeList = new JList<>(nodeModel);
     private final JLabel status = new JLabel(" ");
     private final JComboBox<RunInfo> runs = new JComboBox<>();
+    private final java.util.Map<Integer, String> hostOfSource = new java.util.HashMap<>();
     private final JComboBox<String> speed = new JComboBox<>(SPEEDS);
     private final JTextField replayFrom = new JTextField("0", 5);
     private final JTextField replayTo = new JTextField("60", 5);
@@ -146,11 +147,17 @@ public final class ViewerWindow extends JFrame {
     }
 
     private void fill(List<LoggedNode> nodes, List<RunInfo> runList) {
-        int newestRun = runList.isEmpty() ? -1 : runList.get(0).runId();
-        nodes.stream().filter(n -> n.runId() == newestRun).forEach(nodeModel::addElement);
+        if (!runList.isEmpty()) {
+            RunInfo newest = runList.get(0);
+            newest.nodesByHost().forEach(n -> {
+                nodeModel.addElement(n);
+                hostOfSource.put(n.sourceId(), newest.hostOf(n));
+            });
+        }
         runList.forEach(runs::addItem);
-        status.setText(String.format("%d Datas in the newest run, %d runs recorded; plotting %d node(s)",
-                nodeModel.size(), runList.size(), live.trackedSources().length));
+        status.setText(String.format("%d Datas in the newest run%s, %d runs recorded; plotting %d node(s)",
+                nodeModel.size(), runList.isEmpty() ? "" : " (" + runList.get(0) + ")", runList.size(),
+                live.trackedSources().length));
         legibleNames(nodes);
     }
 
@@ -210,9 +217,11 @@ public final class ViewerWindow extends JFrame {
     private JPanel picker() {
         JPanel p = new JPanel(new BorderLayout(0, 4));
         p.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
-        p.add(new JLabel("Logger's Data nodes (newest run)"), BorderLayout.NORTH);
+        p.add(new JLabel("Logger's Data nodes (newest run, by host)"), BorderLayout.NORTH);
         nodeList.setCellRenderer((list, value, index, selected, focus) -> {
-            JLabel l = new JLabel(LoggerConnection.label(value) + (live.tracks(value.sourceId()) ? "  ●" : ""));
+            String host = hostOfSource.getOrDefault(value.sourceId(), "");
+            JLabel l = new JLabel((host.isEmpty() ? "" : host + ":  ") + LoggerConnection.label(value)
+                    + (live.tracks(value.sourceId()) ? "  ●" : ""));
             l.setFont(list.getFont());
             l.setOpaque(true);
             l.setBorder(BorderFactory.createEmptyBorder(1, 4, 1, 4));

@@ -38,7 +38,7 @@ import picocli.CommandLine.Option;
 import org.fdnet.control.LocalLiveNetwork;
 import org.fdnet.corba.cli.ControlOptions;
 import org.fdnet.corba.control.ControlPublication;
-import org.fdnet.runtime.cli.RunCommand;
+import org.fdnet.run.NetworkRun;
 
 /**
  * {@code fdnet demo}: a RoQ network (default networks/roq-rubble.fdn on the crossing course) on the real-time simulator, joined by the
@@ -91,7 +91,7 @@ public final class DemoCommand implements Callable<Integer> {
     /** The network's control object, for {@code fdnet control} and the editor's {@code --attach}; null without one. */
     private ControlPublication publishControl(RuntimeNetwork net, NetworkInfo definition) {
         try {
-            return control.publish(new LocalLiveNetwork(RunCommand.publishedName(definition, network), net.controller(),
+            return control.publish(new LocalLiveNetwork(NetworkRun.publishedName(definition, network), net.controller(),
                     java.util.Optional.ofNullable(loggerViewer)), new java.io.PrintWriter(System.out, true));
         } catch (IllegalArgumentException e) {
             System.err.println("fdnet demo: the control object is not published: " + e.getMessage());

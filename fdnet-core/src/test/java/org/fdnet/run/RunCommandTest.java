@@ -1,4 +1,4 @@
-package org.fdnet.runtime.cli;
+package org.fdnet.run;
 
 import static org.assertj.core.api.Assertions.assertThat;
 

@@ -1,4 +1,4 @@
-package org.fdnet.runtime.cli;
+package org.fdnet.run;
 
 import java.io.PrintWriter;
 import java.util.Map;

@@ -1,4 +1,4 @@
-package org.fdnet.runtime.cli;
+package org.fdnet.run;
 
 import java.util.Map;
 import java.util.TreeMap;

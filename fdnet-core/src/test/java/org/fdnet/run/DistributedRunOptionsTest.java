@@ -1,0 +1,203 @@
+package org.fdnet.run;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.TimeUnit;
+import org.fdnet.control.LiveNetwork;
+import org.fdnet.corba.FdnetChildProcess;
+import org.fdnet.corba.OrbSettings;
+import org.fdnet.corba.control.RemoteLiveNetwork;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+/**
+ * Every {@code fdnet run} option in a distributed run: a network whose Datas and Relations live on host
+ * {@code flyer} (a child process) and whose {@code Operator} runs in this JVM's {@link NetworkRun}, which reads
+ * the flyer's Datas through stand-ins. Each option either works across hosts or is refused by name.
+ */
+@Timeout(value = 150, unit = TimeUnit.SECONDS)
+class DistributedRunOptionsTest {
+    private static final String NETWORK = """
+            <?xml version="1.0" encoding="UTF-8"?>
+            <cnet name="options-test">
+                <dstructure><name>Level</name><host>flyer</host><path></path>
+                    <class>org.fdnet.runtime.library.DoubleData</class></dstructure>
+                <dstructure><name>Goal</name><host>flyer</host><path></path>
+                    <class>org.fdnet.runtime.library.DoubleData</class></dstructure>
+                <pstructure><name>Source</name><host>flyer</host><path></path>
+                    <class>org.fdnet.runtime.library.Expression</class>
+                    <param name="period" type="long">50</param><param name="expression">1</param></pstructure>
+                <pstructure><name>Operator</name><host>localhost</host><path></path>
+                    <class>org.fdnet.runtime.library.Print</class>
+                    <param name="prefix">operator</param><param name="every" type="long">1000</param></pstructure>
+                <connection>
+                    <write><data>Level</data><proc>Source</proc></write>
+                    <read><data>Level</data><proc>Operator</proc></read>
+                    <read><data>Goal</data><proc>Operator</proc></read>
+                </connection>
+                <module name="Extra" loadatstart="no">
+                    <dstructure><name>Spare</name><host>flyer</host><path></path>
+                        <class>org.fdnet.runtime.library.DoubleData</class></dstructure>
+                </module>
+            </cnet>
+            """;
+
+    @TempDir
+    static Path folder;
+
+    private static final List<FdnetChildProcess> processes = new ArrayList<>();
+    private static String naming;
+    private static Path file;
+
+    @BeforeAll
+    static void startNamingAndFlyer() throws Exception {
+        file = Files.writeString(folder.resolve("options-test.fdn"), NETWORK);
+        int port = FdnetChildProcess.freePort();
+        processes.add(FdnetChildProcess.start("naming", List.of("naming", "--port", Integer.toString(port)),
+                "fdnet naming ready", 60_000));
+        naming = OrbSettings.namingCorbaloc(OrbSettings.LOOPBACK, port);
+        processes.add(FdnetChildProcess.start("host flyer", List.of("host", "--name", "flyer", "--naming", naming),
+                "fdnet host flyer ready", 60_000));
+    }
+
+    @AfterAll
+    static void stopEveryProcess() {
+        for (int i = processes.size() - 1; i >= 0; i--) {
+            processes.get(i).close();
+        }
+    }
+
+    @Test
+    void shouldSetAParameterOnTheHostItsNodeRunsOn() throws Exception {
+        Finished run = runFor("--param", "Source:expression=42");
+        assertThat(run.exit).as(run.output).isZero();
+        // the flyer's Source now writes 42; the value reaches this process's stand-in of Level
+        assertThat(run.output).as(run.output).containsPattern("main/Level\\s+[\\d,]+\\s+42\\.0000");
+
+        Finished bad = runFor("--param", "Nobody:x=1");
+        assertThat(bad.exit).as(bad.output).isEqualTo(2);
+        assertThat(bad.output).contains("--param Nobody:x=1: ");
+    }
+
+    @Test
+    void shouldSetADataOnItsHomeHost() throws Exception {
+        Finished run = runFor("--set", "Goal=3.5");
+        assertThat(run.exit).as(run.output).isZero();
+        assertThat(run.output).as(run.output).containsPattern("main/Goal\\s+[\\d,]+\\s+3\\.5000");
+    }
+
+    @Test
+    void shouldLoadAModuleOnItsHosts() throws Exception {
+        try (Running run = start("--load", "Extra")) {
+            assertThat(run.live.loadedModules()).as(run.output()).contains("Extra");
+            assertThat(run.live.snapshot().module("Extra").nodes()).extracting(n -> n.name()).contains("Spare");
+        }
+    }
+
+    @Test
+    void shouldTraceTheEventsOfThisProcessesHost() throws Exception {
+        Finished run = runFor("--trace");
+        assertThat(run.exit).as(run.output).isZero();
+        // this process's share: the Operator and its stand-ins of the flyer's Datas, as they are made and run
+        assertThat(run.output).containsPattern("trace +[\\d.]+ named +#\\d+ Data main/Level")
+                .containsPattern("trace +[\\d.]+ relation main/Operator RUNNING");
+    }
+
+    @Test
+    void shouldRunThisProcessesHostWithTheWorkersAsked() throws Exception {
+        Finished run = runFor("--workers", "3");
+        assertThat(run.exit).as(run.output).isZero();
+        assertThat(run.output).contains("this process's host runs 3 worker threads");
+    }
+
+    @Test
+    void shouldTellToolsAttachedToTheRunWhereTheLoggersViewerIs() throws Exception {
+        try (Running run = start("--logger-viewer", "127.0.0.1:5999");
+             RemoteLiveNetwork attached = RemoteLiveNetwork.attach("options-test", naming)) {
+            assertThat(attached.loggerViewerAddress()).as(run.output()).isEqualTo(Optional.of("127.0.0.1:5999"));
+        }
+    }
+
+    @Test
+    void shouldRefuseByNameWhatDoesNotApplyAcrossHosts() throws Exception {
+        Finished sim = runFor("--sim", "flat");
+        assertThat(sim.exit).isEqualTo(2);
+        assertThat(sim.output).contains("--sim runs the network on this machine only");
+        Finished port = runFor("--control-port", "4567");
+        assertThat(port.exit).isEqualTo(2);
+        assertThat(port.output).contains("--control-port: a distributed run registers its control object");
+    }
+
+    private record Finished(int exit, String output) {
+    }
+
+    /** Runs the network for 2 s with {@code options} and returns how it ended. */
+    private static Finished runFor(String... options) throws InterruptedException {
+        StringWriter text = new StringWriter();
+        PrintWriter out = new PrintWriter(text, true);
+        int exit = networkRun(out, withBase("--for", "2s", options)).run();
+        return new Finished(exit, text.toString());
+    }
+
+    private static Running start(String... options) throws InterruptedException {
+        StringWriter text = new StringWriter();
+        NetworkRun run = networkRun(new PrintWriter(text, true), withBase("--for", "60s", options));
+        Running running = new Running(run, text);
+        running.thread.start();
+        running.live = run.awaitRunning(60, TimeUnit.SECONDS);
+        assertThat(running.live).as(text.toString()).isNotNull();
+        return running;
+    }
+
+    private static NetworkRun networkRun(PrintWriter out, String[] args) {
+        RunCommand command = CommandLine.populateCommand(new RunCommand(), args);
+        return new NetworkRun(command.file, command.options, out, out, null);
+    }
+
+    private static String[] withBase(String forOption, String duration, String... options) {
+        List<String> args = new ArrayList<>(List.of(file.toString(), "--naming", naming, forOption, duration));
+        args.addAll(List.of(options));
+        return args.toArray(String[]::new);
+    }
+
+    /** A run in the background, stopped (and awaited) on close. */
+    private static final class Running implements AutoCloseable {
+        final NetworkRun run;
+        final StringWriter text;
+        final Thread thread;
+        LiveNetwork live;
+
+        Running(NetworkRun run, StringWriter text) {
+            this.run = run;
+            this.text = text;
+            this.thread = new Thread(() -> {
+                try {
+                    run.run();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }, "test-network-run");
+        }
+
+        String output() {
+            return text.toString();
+        }
+
+        @Override
+        public void close() throws InterruptedException {
+            run.stop();
+            thread.join(60_000);
+        }
+    }
+}

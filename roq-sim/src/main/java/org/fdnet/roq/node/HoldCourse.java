@@ -74,7 +74,8 @@ public class HoldCourse extends Relation {
 
     @Override
     protected void compute(RelationContext c) {
-        if (!now.read(c.input("joint angles"), c.input("foot forces"), c.input("attitude"))) {
+        if (!now.read(SensedFeet.named(c, "joint angles"), SensedFeet.named(c, "foot forces"),
+                SensedFeet.named(c, "attitude"))) {
             return;
         }
         double seconds = c.seconds();
@@ -83,8 +84,8 @@ public class HoldCourse extends Relation {
         }
         double dt = Double.isNaN(lastSeconds) ? 0 : seconds - lastSeconds;
         lastSeconds = seconds;
-        Value gyro = c.inputIndex("imu gyro") >= 0 ? c.input("imu gyro") : null;
-        Value attitude = c.input("attitude");
+        Value gyro = SensedFeet.named(c, "imu gyro");
+        Value attitude = SensedFeet.named(c, "attitude");
         double gyroTurn = Double.NaN;
         if (gyro != null && gyro.length() >= 3 && attitude != null && attitude.length() >= 2) {
             // the heading's rate from the body-frame rates: (sin roll * q + cos roll * r) / cos pitch
@@ -168,7 +169,7 @@ public class HoldCourse extends Relation {
 
     /** The leg the gait's phase (the Data named {@code gait phase}) has in the air or probing, else -1. */
     private static int swinging(RelationContext c) {
-        Value phase = c.inputIndex("gait phase") >= 0 ? c.input("gait phase") : null;
+        Value phase = SensedFeet.named(c, "gait phase");
         boolean up = phase != null && phase.length() > 1
                 && (phase.element(1) > 0.5 || phase.length() > 2 && phase.element(2) > 0.5);
         return up ? (int) phase.element(0) : -1;

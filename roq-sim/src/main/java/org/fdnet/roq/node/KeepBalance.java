@@ -94,8 +94,9 @@ public class KeepBalance extends Relation {
 
     @Override
     protected void compute(RelationContext c) {
-        Value phase = c.input("gait phase");
-        if (phase == null || phase.length() < 1 || !sensed.read(c.input("joint angles"), c.input("foot forces"), c.input("attitude"))) {
+        Value phase = SensedFeet.named(c, "gait phase");
+        if (phase == null || phase.length() < 1 || !sensed.read(SensedFeet.named(c, "joint angles"),
+                SensedFeet.named(c, "foot forces"), SensedFeet.named(c, "attitude"))) {
             return;
         }
         int next = (int) phase.element(0);
@@ -143,7 +144,7 @@ public class KeepBalance extends Relation {
         }
         double tx = (cx - comX(unshifted) - biasX) / FOLLOW;
         double ty = (cy - comY(unshifted) - biasY) / FOLLOW;
-        Value attitude = c.input("attitude");
+        Value attitude = SensedFeet.named(c, "attitude");
         if (attitude != null && attitude.length() >= 2) {
             // roll > 0: the left side (y > 0) up; pitch > 0: the nose (x > 0) down. The body's low side is where the
             // tip (attitude minus its slow mean, the ground's slope) points: shift the body the other way.

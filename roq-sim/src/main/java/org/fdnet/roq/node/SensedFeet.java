@@ -5,6 +5,7 @@ import static org.fdnet.roq.sim.RoqGeometry.JOINTS_PER_LEG;
 import static org.fdnet.roq.sim.RoqGeometry.LEGS;
 
 import org.fdnet.roq.sim.RoqGeometry;
+import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
 
 /**
@@ -14,6 +15,11 @@ import org.fdnet.runtime.Value;
  * ({@link KeepBalance}, {@link HoldCourse}); it never reads ground truth.
  */
 final class SensedFeet {
+    /** The value of the input called {@code name}, or null when it is not connected or not there. */
+    static Value named(RelationContext c, String name) {
+        return c.inputIndex(name) >= 0 ? c.input(name) : null;
+    }
+
     /** x, y, z of each foot in the level frame, m. */
     final double[] position = new double[3 * LEGS];
     /** Each sole's force, N. */

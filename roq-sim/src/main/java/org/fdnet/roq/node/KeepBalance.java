@@ -49,6 +49,8 @@ public class KeepBalance extends Relation {
     private static final double FOLLOW = 1 - LEGS * LEG_REST / 2 / TOTAL_MASS;
     /** The farthest the body shifts from its place over the feet, m. */
     private static final double MOST_SHIFT = 0.15;
+    /** The fastest the body shifts over its feet, m/s. */
+    private static final double MOST_SPEED = 0.25;
     /** The least time between two shifts, s. */
     static final double STEP = 0.0095;
 
@@ -160,8 +162,10 @@ public class KeepBalance extends Relation {
             ty += tip * (roll - meanRoll) / FOLLOW;
         }
         double a = 1 - Math.exp(-dt / tau);
-        dx = clamp(dx + (tx - dx) * a, MOST_SHIFT);
-        dy = clamp(dy + (ty - dy) * a, MOST_SHIFT);
+        // no faster than MOST_SPEED: a body flung at the new triangle makes the feet slip and the body rock
+        double step = MOST_SPEED * dt;
+        dx = clamp(dx + clamp((tx - dx) * a, step), MOST_SHIFT);
+        dy = clamp(dy + clamp((ty - dy) * a, step), MOST_SHIFT);
         for (int leg = 0; leg < LEGS; leg++) {
             offset[3 * leg] = -dx;
             offset[3 * leg + 1] = -dy;

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.locks.LockSupport;
 import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.roq.node.JointTargets;
@@ -40,8 +41,11 @@ import org.slf4j.LoggerFactory;
  *   no JNI) and feeds each new one; the simulator's 1 kHz loop never waits for it.</li>
  * </ul>
  *
- * <p>Commands are observed, not polled: every value JointTargets takes that differs from the last one sent is sent
- * at once (from the commit that wrote it), so none is skipped and none waits for the next snapshot. Its source tick
+ * <p>Commands are observed, not polled. In real time every value JointTargets takes that differs from the last one
+ * sent is sent at once (from the commit that wrote it), so none is skipped and none waits for the next snapshot.
+ * Stepped, the newest value of each cycle is sent at the cycle's end (the loop takes one command a tick, and a
+ * firing that finishes on a worker thread after {@code advanceTo} must not reach the loop at a wall-clock moment:
+ * the run stays reproducible). Its source tick
  * ({@link Value#tick()}, the newest snapshot it was computed from) goes with it ({@link JointCommand#sourceTick});
  * its freshness for the loop's staleness check is the newest snapshot read.
  *
@@ -65,15 +69,19 @@ public final class SimBridge implements AutoCloseable {
     /** The feeding thread's scratch for one commit. */
     private SensorData[] pushSensors = new SensorData[0];
     private Value[] pushValues = new Value[0];
-    /** Guarded by {@link #command}. */
+    /** Guarded by {@link #command}: the last value sent, and (stepped) the newest one waiting for the cycle's end. */
     private Value lastSent;
+    private Value pending;
+    private final boolean realTime;
     private volatile boolean running;
     private Thread thread;
     private volatile long cycles;
     private volatile long commandsSent;
 
-    private SimBridge(RuntimeNetwork network, RoqSimulator simulator, long startMicros, int cycleTicks) {
+    private SimBridge(RuntimeNetwork network, RoqSimulator simulator, long startMicros, int cycleTicks,
+                      boolean realTime) {
         this.network = network;
+        this.realTime = realTime;
         this.simulator = simulator;
         this.startMicros = startMicros;
         this.cycleTicks = cycleTicks;
@@ -94,12 +102,12 @@ public final class SimBridge implements AutoCloseable {
         if (cycleTicks < 1) {
             throw new IllegalArgumentException("cycleTicks must be at least 1, was " + cycleTicks);
         }
-        return new SimBridge(network, simulator, startMicros, cycleTicks);
+        return new SimBridge(network, simulator, startMicros, cycleTicks, false);
     }
 
     /** A real-time bridge on its own thread ("roq-bridge"); {@code network} runs on the wall clock. */
     public static SimBridge realTime(RuntimeNetwork network, RoqSimulator simulator) {
-        SimBridge b = new SimBridge(network, simulator, 0, 1);
+        SimBridge b = new SimBridge(network, simulator, 0, 1, true);
         b.running = true;
         b.thread = new Thread(b::poll, "roq-bridge");
         b.thread.setDaemon(true);
@@ -109,7 +117,7 @@ public final class SimBridge implements AutoCloseable {
 
     /** Stepped mode: runs {@code ticks} ticks of simulated time (rounded up to whole cycles) on this thread. */
     public void run(int ticks) {
-        if (thread != null) {
+        if (realTime) {
             throw new IllegalStateException("run(ticks) is for a stepped bridge; this one runs in real time");
         }
         for (int done = 0; done < ticks; done += cycleTicks) {
@@ -117,6 +125,7 @@ public final class SimBridge implements AutoCloseable {
             long tick = simulator.read(snapshot);
             feed();
             network.advanceTo(startMicros + tick * 1000L);
+            sendPending();
             cycles++;
         }
     }
@@ -159,17 +168,35 @@ public final class SimBridge implements AutoCloseable {
             return;
         }
         synchronized (command) {
-            if (v.samePayload(lastSent)) {
-                return;
+            if (realTime) {
+                send(v);
+            } else {
+                pending = v; // stepped: the loop takes one command a tick; send at the cycle's end, reproducibly
             }
-            lastSent = v;
-            for (int j = 0; j < RoqGeometry.JOINTS; j++) {
-                command.target(j, v.element(j));
-            }
-            command.basedOnTick(-1).sourceTick(v.tick());
-            simulator.send(command);
-            commandsSent++;
         }
+    }
+
+    private void sendPending() {
+        synchronized (command) {
+            if (pending != null) {
+                send(pending);
+                pending = null;
+            }
+        }
+    }
+
+    /** Sends {@code v} unless it equals the last value sent (the caller holds {@link #command}). */
+    private void send(Value v) {
+        if (v.samePayload(lastSent)) {
+            return;
+        }
+        lastSent = v;
+        for (int j = 0; j < RoqGeometry.JOINTS; j++) {
+            command.target(j, v.element(j));
+        }
+        command.basedOnTick(-1).sourceTick(v.tick());
+        simulator.send(command);
+        commandsSent++;
     }
 
     /** Looks again for the network's RoqSensor and JointTargets nodes. */
@@ -206,17 +233,20 @@ public final class SimBridge implements AutoCloseable {
     }
 
     private List<NodeRef> nodesOf(Class<?> type) {
-        return network.readDefinition(def -> {
-            List<NodeRef> refs = new ArrayList<>();
-            for (ModuleInfo m : def.modules()) {
-                for (NodeInfo n : m.nodes()) {
-                    if (type.getName().equals(n.className())) {
-                        refs.add(new NodeRef(m.name(), n.name()));
-                    }
+        return network.readDefinition(def -> nodesOf(def, type));
+    }
+
+    /** The nodes of {@code definition} whose class is {@code type} (by name), in definition order. */
+    public static List<NodeRef> nodesOf(NetworkInfo definition, Class<?> type) {
+        List<NodeRef> refs = new ArrayList<>();
+        for (ModuleInfo m : definition.modules()) {
+            for (NodeInfo n : m.nodes()) {
+                if (type.getName().equals(n.className())) {
+                    refs.add(new NodeRef(m.name(), n.name()));
                 }
             }
-            return refs;
-        });
+        }
+        return refs;
     }
 
     private static void closeQuietly(AutoCloseable handle) {

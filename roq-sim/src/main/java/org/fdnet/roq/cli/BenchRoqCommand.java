@@ -27,13 +27,15 @@ import picocli.CommandLine.Option;
  *   <li>Stepped speed of a RoQ network driving the simulator through the {@link SimBridge} (one network advance
  *   per 1 ms tick) beside the plant alone stepped the same way (a snapshot read and a command each tick, no
  *   network), in the same run, alternating second by second so the machine's load falls on both alike.</li>
- *   <li>{@link ReflexLatencyBench Reflex latency} in real time, the network recording with a logger, beside a bare
- *   Java echo of the snapshot's tick into the command slot.</li>
+ *   <li>{@link ReflexLatencyBench Reflex latency} in real time from stimuli (pushes), snapshot to applied command,
+ *   for the tilt reflex and for the periodic path, the network recording with a logger, beside a bare Java echo of
+ *   each snapshot's tick into the command slot.</li>
  * </ol>
  */
 @Command(name = "roq", mixinStandardHelpOptions = true,
         description = "(a) stepped speed of a RoQ network + simulator beside the simulator alone; (b) real-time reflex"
-                + " latency, snapshot to applied command, beside a bare Java echo (same run).")
+                + " latency from pushes, stimulus snapshot to applied command, tilt reflex and periodic path, beside a"
+                + " bare Java echo (same run).")
 public final class BenchRoqCommand implements Callable<Integer> {
     @Option(names = "--seconds", defaultValue = "60",
             description = "seconds for each measurement: simulated in (a), wall in (b) (default 60)")
@@ -48,8 +50,15 @@ public final class BenchRoqCommand implements Callable<Integer> {
     @Option(names = "--course", defaultValue = "crossing", description = "course (default crossing, the demo's)")
     String course;
 
-    @Option(names = "--network", defaultValue = "networks/roq-rubble.fdn", description = "network (default networks/roq-rubble.fdn, the demo's)")
+    @Option(names = "--network", defaultValue = "networks/roq-rubble.fdn", description = "(a) network (default networks/roq-rubble.fdn, the demo's)")
     Path network;
+
+    @Option(names = "--reflex-network", defaultValue = "networks/roq-reflex-bench.fdn",
+            description = "(b) network with a TiltReflex (default networks/roq-reflex-bench.fdn)")
+    Path reflexNetwork;
+
+    @Option(names = "--reflex-course", defaultValue = "flat", description = "(b) course (default flat)")
+    String reflexCourse;
 
     @Override
     public Integer call() throws Exception {
@@ -78,7 +87,20 @@ public final class BenchRoqCommand implements Callable<Integer> {
             stepped(c, definition);
         }
         if (part.contains("b")) {
-            return new ReflexLatencyBench(c, definition, network, seconds, !noLogger).run();
+            Course rc;
+            NetworkInfo reflex;
+            try {
+                rc = CourseLoader.resolve(reflexCourse);
+                if (!Files.isRegularFile(reflexNetwork)) {
+                    System.err.println("fdnet bench roq: no network file " + reflexNetwork.toAbsolutePath());
+                    return 2;
+                }
+                reflex = NetworkRepository.load(reflexNetwork);
+            } catch (CourseFormatException | NetworkFileException e) {
+                System.err.println("fdnet bench roq: " + e.getMessage());
+                return 2;
+            }
+            return new ReflexLatencyBench(rc, reflex, reflexNetwork, seconds, !noLogger).run();
         }
         return 0;
     }

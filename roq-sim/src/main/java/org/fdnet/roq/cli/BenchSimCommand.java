@@ -75,9 +75,12 @@ public final class BenchSimCommand implements Callable<Integer> {
                 plant, plantNanos / 1e3 / n);
         System.out.printf(Locale.ROOT, "full tick with IR, sonar, depth rays %6.1f sim s per wall s (%.1f µs per tick, %.2f× bare)%n",
                 full, fullNanos / 1e3 / n, full / bare);
-        double ratio = plant / bare;
-        System.out.printf(Locale.ROOT, "plant + servos: %.2f× bare (target ≥ 0.9: %s); %.1f× real time (target ≥ 10: %s)%n",
-                ratio, ratio >= 0.9 ? "met" : "NOT met", plant, plant >= 10 ? "met" : "NOT met");
+        // The verdict is on the tick as shipped (range sensors on: what every simulator opens with unless told);
+        // plant + servos alone is printed above for comparison with earlier figures.
+        double ratio = full / bare;
+        System.out.printf(Locale.ROOT, "tick as shipped (range sensors on): %.2f× bare (target ≥ 0.9: %s); %.1f× real time"
+                + " (target ≥ 10: %s); plant + servos alone %.2f× bare%n",
+                ratio, ratio >= 0.9 ? "met" : "NOT met", full, full >= 10 ? "met" : "NOT met", plant / bare);
         return 0;
     }
 

@@ -8,25 +8,28 @@ import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.logger.NetworkStateLogger;
 import org.fdnet.netinfo.NetworkInfo;
-import org.fdnet.roq.bridge.SimBridge;
 import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.JointCommand;
 import org.fdnet.roq.sim.LoopStatistics;
 import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
-import org.fdnet.roq.sim.SharedBlockLayout;
 import org.fdnet.roq.sim.SimMode;
-import org.fdnet.runtime.RuntimeNetwork;
-import org.fdnet.runtime.RuntimeOptions;
 
 /**
- * {@code fdnet bench roq} part (b): reflex latency in real time. The loop counts, for every command it applies, the
- * ticks from the snapshot the command was based on ({@link JointCommand#basedOnTick}) to the first snapshot computed
- * under it ({@link LoopStatistics#reflexPercentileTicks}); 1 tick = 1 ms, so "1" means applied at the very next
- * tick. Measured for a bare Java echo (a thread that copies each new snapshot's tick into the command slot, no
- * network: the baseline) and then for the network joined by the real-time {@link SimBridge}, recording with a
- * logger, each for the same number of wall seconds, one after the other in the same run.
+ * {@code fdnet bench roq} part (b): reflex latency through the network, in real time, from stimuli. Three
+ * measurements, one after the other in the same run:
+ * <ol>
+ *   <li>baseline: a bare Java echo, no network — each new snapshot's tick copied into a command at once;</li>
+ *   <li>the tilt reflex: the network (default {@code networks/roq-reflex-bench.fdn}) walking with the
+ *   {@link org.fdnet.roq.bridge.SimBridge}, recording with a logger, pushed during leg swings
+ *   ({@link StimulusLatencyRun});</li>
+ *   <li>the periodic path: the same with the reflex's module unloaded, so only what the rest of the network
+ *   computes from the sensors can answer.</li>
+ * </ol>
+ * Each latency is from the snapshot that first showed the stimulus (for the echo: every snapshot) to the tick the
+ * loop applied the first command computed from it, + 1 (the tick it first shows in a snapshot): 1 ms = the very
+ * next tick. The figures come from the loop's applied-command ring (applied tick and source tick per command).
  */
 final class ReflexLatencyBench {
     private final Course course;
@@ -44,10 +47,13 @@ final class ReflexLatencyBench {
     }
 
     int run() throws Exception {
-        System.out.printf(Locale.ROOT, "fdnet bench roq (b): reflex latency in real time, %d wall s each, course %s%n",
-                seconds, course.name());
-        LoopStatistics echo = echoAlone();
-        print("baseline: bare Java echo       ", echo, "");
+        System.out.printf(Locale.ROOT, "fdnet bench roq (b): snapshot-to-applied-command latency in real time, %d wall s"
+                + " each, course %s, network %s; pushes of %.0f N for %.1f s towards the swinging leg's corner; %d"
+                + " sole-force drops (the cell under the front-left foot breaks while hind-right swings)%n",
+                seconds, course.name(), network, StimulusLatencyRun.PUSH_NEWTONS, StimulusLatencyRun.PUSH_SECONDS,
+                StimulusLatencyRun.CELL_BREAK_RUNS);
+        LatencySample echo = echoAlone();
+        System.out.printf(Locale.ROOT, "baseline: bare Java echo, every snapshot: %s commands%n", echo.summary());
         NetworkStateLogger logger = null;
         if (record) {
             try {
@@ -62,18 +68,29 @@ final class ReflexLatencyBench {
             LoggerClient client = logger == null ? null
                     : new LoggerClient(LoggerClientSettings.parseAddress("127.0.0.1:" + logger.receiverPort(),
                             "fdnet bench roq " + definition.name()));
-            LoopStatistics withNetwork = withNetwork(client);
-            String recorded = "";
+            StimulusLatencyRun reflexRun = new StimulusLatencyRun(course, definition, true, seconds, client);
+            StimulusLatencyRun periodicRun = new StimulusLatencyRun(course, definition, false, seconds, client);
+            StimulusLatencyRun.Outcome reflex = reflexRun.run(StimulusLatencyRun.Kind.PUSH);
+            print("tilt reflex, pushes, " + reflexRun.describe(), reflex);
+            StimulusLatencyRun.Outcome reflexDrops = reflexRun.run(StimulusLatencyRun.Kind.CELL_BREAK);
+            print("tilt reflex, sole-force drops, " + reflexRun.describe(), reflexDrops);
+            StimulusLatencyRun.Outcome periodic = periodicRun.run(StimulusLatencyRun.Kind.PUSH);
+            print("periodic path, pushes, " + periodicRun.describe(), periodic);
+            reflexDrops.latencies().addAllTo(reflex.latencies());
+            String recorded = "not recorded";
             if (client != null) {
                 client.close();
                 ClientStatus st = client.status();
-                recorded = String.format(Locale.ROOT, " (logger recording: %,d of %,d events committed, %,d lost)",
+                recorded = String.format(Locale.ROOT, "logger recording: %,d of %,d events committed, %,d lost",
                         st.acked(), st.accepted(), st.lost());
             }
-            print("network " + network.getFileName() + " + bridge", withNetwork, recorded);
-            int p99 = withNetwork.reflexPercentileTicks(99);
-            System.out.printf(Locale.ROOT, "network reflex p99 %d ms (target ≤ 2 ms: %s); echo baseline p99 %d ms%n",
-                    p99, p99 <= 2 ? "met" : "NOT met", echo.reflexPercentileTicks(99));
+            LatencySample r = reflex.latencies();
+            String verdict = r.count() == 0 ? "NOT met (no command answered a stimulus)"
+                    : r.percentile(99) <= 2 ? "met" : "NOT met";
+            System.out.printf(Locale.ROOT, "tilt reflex (pushes and drops) p99 %s (target ≤ 2 ms: %s; %s); periodic path p99 %s; echo"
+                            + " baseline p99 %d ms%n", r.count() == 0 ? "-" : r.percentile(99) + " ms", verdict, recorded,
+                    periodic.latencies().count() == 0 ? "- (no command computed from the stimulus)"
+                            : periodic.latencies().percentile(99) + " ms", echo.percentile(99));
         } finally {
             if (logger != null) {
                 logger.stop();
@@ -82,8 +99,16 @@ final class ReflexLatencyBench {
         return 0;
     }
 
-    private LoopStatistics echoAlone() throws InterruptedException {
-        LoopStatistics stats = new LoopStatistics();
+    private static void print(String what, StimulusLatencyRun.Outcome o) {
+        System.out.printf(Locale.ROOT, "%s: %d stimuli, %d shown beyond the thresholds, %d answered by a command: %s%s%n",
+                what, o.stimuli(), o.shown(), o.latencies().count(), o.latencies().summary(),
+                o.fell() ? " (RoQ fell: pushes stopped)" : "");
+    }
+
+    private LatencySample echoAlone() {
+        LatencySample sample = new LatencySample();
+        long[] applied = new long[64];
+        long[] source = new long[64];
         try (RoqSimulator sim = RoqSimulator.open(course, SimMode.REAL_TIME)) {
             SensorSnapshot s = new SensorSnapshot();
             JointCommand command = new JointCommand();
@@ -93,8 +118,15 @@ final class ReflexLatencyBench {
             }
             long end = System.nanoTime() + seconds * 1_000_000_000L;
             long last = -1;
+            long seen = sim.appliedCommands(0, applied, source);
             while (System.nanoTime() < end) {
                 long tick = sim.read(s);
+                long count = sim.appliedCommands(seen, applied, source);
+                for (long n = Math.max(seen, count - applied.length); n < count; n++) {
+                    int i = (int) (n - Math.max(seen, count - applied.length));
+                    sample.add(applied[i] + 1 - source[i]);
+                }
+                seen = count;
                 if (tick == last) {
                     LockSupport.parkNanos(50_000); // the bridge's own polling period
                     continue;
@@ -103,44 +135,8 @@ final class ReflexLatencyBench {
                 command.basedOnTick(tick);
                 sim.send(command);
             }
-            sim.statistics(stats);
+            sim.statistics(new LoopStatistics());
         }
-        return stats;
-    }
-
-    private LoopStatistics withNetwork(LoggerClient client) throws Exception {
-        LoopStatistics stats = new LoopStatistics();
-        RuntimeOptions options = RuntimeOptions.defaults();
-        if (client != null) {
-            options = options.sink(client);
-        }
-        try (RoqSimulator sim = RoqSimulator.open(course, SimMode.REAL_TIME);
-             RuntimeNetwork net = RuntimeNetwork.start(definition, options);
-             SimBridge bridge = SimBridge.realTime(net, sim)) {
-            for (int second = 1; second <= seconds; second++) {
-                Thread.sleep(1000);
-                if (second % 10 == 0 || second == seconds) {
-                    sim.statistics(stats);
-                    System.out.printf(Locale.ROOT, "  %3d s: %,d commands applied, reflex p50 %d ms p99 %d ms%n", second,
-                            stats.commandsApplied(), stats.reflexPercentileTicks(50), stats.reflexPercentileTicks(99));
-                }
-            }
-            sim.statistics(stats);
-        }
-        return stats;
-    }
-
-    private static void print(String what, LoopStatistics s, String suffix) {
-        StringBuilder bins = new StringBuilder();
-        for (int t = 0; t < SharedBlockLayout.REFLEX_BINS; t++) {
-            if (s.reflexCount(t) > 0) {
-                bins.append(String.format(Locale.ROOT, " %s%d:%,d", t == SharedBlockLayout.REFLEX_BINS - 1 ? "≥" : "", t,
-                        s.reflexCount(t)));
-            }
-        }
-        System.out.printf(Locale.ROOT, "%s reflex p50 %d ms, p99 %d ms over %,d commands applied (%,d stale); loop"
-                        + " wake-up p99 %.1f µs, %,d overruns of %,d ticks; by ticks:%s%s%n", what,
-                s.reflexPercentileTicks(50), s.reflexPercentileTicks(99), s.commandsApplied(), s.commandsStale(),
-                s.latencyPercentileNanos(99) / 1e3, s.overruns(), s.ticks(), bins, suffix);
+        return sample;
     }
 }

@@ -9,13 +9,16 @@
  *  JointCommand ──send()──▶ command slot (sequenced) ─────────────────▶ tick: read slot, validate, count bad
  *                                                                        12 servos: PD → motor limits → torque
  *                                                                        mj_step (MuJoCo)
- *  SensorSnapshot ◀─read()── snapshot + LoopStatistics (seqlock) ◀────── sensors: joints, inclinometer, soles,
+ *  Stimulus ──stimulate()──▶ stimulus table (sequenced) ──────────────▶ pushes → xfrc_applied; cell breaks
+ *  SensorSnapshot ◀─read()── snapshot + LoopStatistics (seqlock) ◀────── sensors: joints, inclinometer, IMU, soles,
  *                                                                        IR, ultrasonic, depth pixels, fragile cells
+ *  appliedCommands() ◀──── applied-command ring (applied tick, source tick per command, same seqlock)
  * </pre>
  *
  * In {@link org.fdnet.roq.sim.SimMode#REAL_TIME} the tick runs on a C thread at 1 kHz on absolute deadlines; in
  * {@link org.fdnet.roq.sim.SimMode#STEPPED} the same tick runs {@code n} times per
  * {@link org.fdnet.roq.sim.RoqSimulator#step(int)}. Java never calls into C per tick: it reads and writes the
- * buffer. {@link org.fdnet.roq.sim.RoqNativeLibrary} loads the library and checks the ABI handshake.
+ * buffer. {@link org.fdnet.roq.sim.RoqNativeLibrary} loads the library and checks the ABI handshake (version, size
+ * and every offset, field by field).
  */
 package org.fdnet.roq.sim;

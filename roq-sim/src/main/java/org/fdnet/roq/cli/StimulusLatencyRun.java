@@ -1,0 +1,262 @@
+package org.fdnet.roq.cli;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.atomic.AtomicLong;
+import org.fdnet.event.client.LoggerClient;
+import org.fdnet.netinfo.ModuleInfo;
+import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.netinfo.NodeInfo;
+import org.fdnet.netinfo.NodeRef;
+import org.fdnet.roq.bridge.SimBridge;
+import org.fdnet.roq.node.RoqSensor;
+import org.fdnet.roq.node.TiltReflex;
+import org.fdnet.roq.sim.CellBreak;
+import org.fdnet.roq.sim.Course;
+import org.fdnet.roq.sim.FragileCell;
+import org.fdnet.roq.sim.Push;
+import org.fdnet.roq.sim.RoqGeometry;
+import org.fdnet.roq.sim.RoqSimulator;
+import org.fdnet.roq.sim.SensorSnapshot;
+import org.fdnet.roq.sim.SimMode;
+import org.fdnet.runtime.RuntimeNetwork;
+import org.fdnet.runtime.RuntimeOptions;
+import org.fdnet.runtime.Value;
+
+/**
+ * One real-time run of {@code bench roq} (b): pushes a walking RoQ, one push towards the corner of the leg in the
+ * air at a time, and measures for each the ticks from the snapshot that first showed the stimulus — the first
+ * attitude or gyro reading, after the push began, beyond the tilt reflex's own thresholds ({@code tilt},
+ * {@code rate} of its {@link TiltReflex}) — to the tick the loop applied the first command computed from that
+ * snapshot or a later one (its source tick, {@link org.fdnet.runtime.Value#tick()}), + 1: the tick it first shows
+ * in a snapshot. The bridge sends only commands that changed, so every command counted changed the targets.
+ *
+ * <pre>
+ *  push ─▶ snapshot S: reading beyond threshold ─▶ network ─▶ JointTargets (source tick ≥ S) ─▶ applied at tick A
+ *  latency = A + 1 − S   (the loop's applied-command ring gives A and the source tick of every command)
+ * </pre>
+ */
+final class StimulusLatencyRun {
+    /** A push that tips the crawl past the reflex's thresholds without felling it (TiltReflexTest). */
+    static final double PUSH_NEWTONS = 300;
+    static final double PUSH_SECONDS = 0.1;
+    private static final double[] CORNER_DEGREES = {45, -45, 135, 225}; // fl, fr, hl, hr
+    private static final int FRONT_LEFT = 0;
+    private static final int HIND_RIGHT = 3;
+
+    record Outcome(int stimuli, int shown, LatencySample latencies, boolean fell) {
+    }
+
+    /** Which stimulus a run applies. */
+    enum Kind {
+        /** Pushes on the body during leg swings, one run of the given length. */
+        PUSH,
+        /**
+         * Sole-force drops: short runs on {@link #cellsUnderTheFeet}, each breaking the cell under the front-left
+         * foot while the hind-right leg (its diagonal partner) is in the air.
+         */
+        CELL_BREAK
+    }
+
+    private final Course course;
+    private final NetworkInfo definition;
+    private final boolean reflexLoaded;
+    private final int seconds;
+    private final LoggerClient client;
+    private final double tilt;
+    private final double rate;
+    private final String reflexModule;
+    private final AtomicLong armedAfter = new AtomicLong(Long.MAX_VALUE);
+    private final AtomicLong shownAt = new AtomicLong(-1);
+    private final long[] appliedTicks = new long[64];
+    private final long[] sourceTicks = new long[64];
+    private long seen;
+
+    StimulusLatencyRun(Course course, NetworkInfo definition, boolean reflexLoaded, int seconds, LoggerClient client) {
+        this.course = course;
+        this.definition = definition;
+        this.reflexLoaded = reflexLoaded;
+        this.seconds = seconds;
+        this.client = client;
+        NodeRef reflex = SimBridge.nodesOf(definition, TiltReflex.class).stream().findFirst().orElseThrow(() ->
+                new IllegalArgumentException("network " + definition.name() + " has no " + TiltReflex.class.getName()
+                        + " (bench roq (b) measures it; networks/roq-reflex-bench.fdn has one)"));
+        NodeInfo node = definition.node(reflex);
+        tilt = parameter(node, "tilt", 0.15);
+        rate = parameter(node, "rate", 1.0);
+        reflexModule = reflex.module();
+    }
+
+    Outcome run(Kind kind) throws Exception {
+        if (kind == Kind.PUSH) {
+            return run(course, Kind.PUSH, seconds);
+        }
+        Outcome sum = new Outcome(0, 0, new LatencySample(), false);
+        Course cells = cellsUnderTheFeet(course);
+        for (int i = 0; i < CELL_BREAK_RUNS; i++) {
+            Outcome o = run(cells, Kind.CELL_BREAK, 4);
+            o.latencies().addAllTo(sum.latencies());
+            sum = new Outcome(sum.stimuli() + o.stimuli(), sum.shown() + o.shown(), sum.latencies(), sum.fell() || o.fell());
+        }
+        return sum;
+    }
+
+    /** Sole-force-drop runs per measurement. */
+    static final int CELL_BREAK_RUNS = 8;
+
+    /** {@code c} with a strong fragile cell (1000 N, 8 cm deep: a drop that tips RoQ) under each standing foot, front-left's first. */
+    static Course cellsUnderTheFeet(Course c) {
+        List<FragileCell> cells = new ArrayList<>();
+        double[] foot = new double[3];
+        for (int leg = 0; leg < RoqGeometry.LEGS; leg++) {
+            RoqGeometry.footInBody(leg, RoqGeometry.STANDING_POSE[0], RoqGeometry.STANDING_POSE[1],
+                    RoqGeometry.STANDING_POSE[2], foot);
+            cells.add(new FragileCell(c.startX() + foot[0], c.startY() + foot[1], 0.12, 0.12, 0.08, 1000));
+        }
+        return c.withFragileCells(cells);
+    }
+
+    private Outcome run(Course on, Kind kind, int runSeconds) throws Exception {
+        RuntimeOptions options = RuntimeOptions.defaults();
+        if (client != null) {
+            options = options.sink(client);
+        }
+        LatencySample sample = new LatencySample();
+        int stimuli = 0;
+        int shown = 0;
+        boolean fell = false;
+        try (RoqSimulator sim = RoqSimulator.open(on, SimMode.REAL_TIME);
+             RuntimeNetwork net = RuntimeNetwork.start(definition, options);
+             SimBridge bridge = SimBridge.realTime(net, sim)) {
+            if (!reflexLoaded && !net.controller().unload(reflexModule).executed()) {
+                throw new IllegalStateException("cannot unload module " + reflexModule);
+            }
+            List<AutoCloseable> watches = new ArrayList<>();
+            for (NodeRef ref : sensors(net, "attitude")) {
+                watches.add(net.controller().observe(ref, (r, id, v) -> check(v, tilt)));
+            }
+            for (NodeRef ref : sensors(net, "imu_gyro")) {
+                watches.add(net.controller().observe(ref, (r, id, v) -> check(v, rate)));
+            }
+            NodeRef phase = dataNamed(net, "gait phase");
+            NodeRef fallen = dataNamed(net, "fallen");
+            SensorSnapshot s = new SensorSnapshot();
+            long end = System.nanoTime() + runSeconds * 1_000_000_000L;
+            if (kind == Kind.PUSH) {
+                Thread.sleep(1500); // stand up and start walking
+            }
+            seen = sim.appliedCommands(0, appliedTicks, sourceTicks);
+            while (System.nanoTime() < end && !(fell = isTrue(net, fallen))) {
+                int leg = legInTheAir(net, phase, end);
+                if (leg < 0 || (kind == Kind.CELL_BREAK && leg != HIND_RIGHT)) {
+                    continue;
+                }
+                long first = sim.read(s) + 3;
+                shownAt.set(-1);
+                armedAfter.set(first);
+                sim.stimulate(kind == Kind.PUSH
+                        ? new Push(first * 0.001, PUSH_SECONDS, PUSH_NEWTONS, CORNER_DEGREES[leg])
+                        : new CellBreak(first * 0.001, FRONT_LEFT));
+                stimuli++;
+                long latency = await(sim);
+                armedAfter.set(Long.MAX_VALUE);
+                if (shownAt.get() >= 0) {
+                    shown++;
+                }
+                if (latency >= 0) {
+                    sample.add(latency);
+                }
+                if (kind == Kind.CELL_BREAK) {
+                    break; // one break a run: the cell is gone
+                }
+                Thread.sleep(2000); // let the walk settle before the next push
+            }
+            for (AutoCloseable w : watches) {
+                w.close();
+            }
+        }
+        return new Outcome(stimuli, shown, sample, fell);
+    }
+
+    /** A reading beyond {@code limit} (in roll or pitch, the first two elements) after the armed push began. */
+    private void check(Value v, double limit) {
+        if (v.tick() > armedAfter.get() && shownAt.get() < 0 && v.length() >= 2
+                && (Math.abs(v.element(0)) > limit || Math.abs(v.element(1)) > limit)) {
+            shownAt.compareAndSet(-1, v.tick());
+        }
+    }
+
+    /** Waits for the stimulus to show and for the first command computed from it; its latency, or −1. */
+    private long await(RoqSimulator sim) throws InterruptedException {
+        long deadline = System.nanoTime() + 900_000_000L;
+        while (System.nanoTime() < deadline) {
+            long count = sim.appliedCommands(seen, appliedTicks, sourceTicks);
+            long firstCopied = Math.max(seen, count - appliedTicks.length);
+            long shown = shownAt.get();
+            for (long n = firstCopied; n < count && shown >= 0; n++) {
+                int i = (int) (n - firstCopied);
+                if (sourceTicks[i] >= shown) {
+                    seen = n + 1;
+                    return appliedTicks[i] + 1 - shown;
+                }
+            }
+            seen = count;
+            Thread.sleep(0, 200_000);
+        }
+        return -1;
+    }
+
+    private static int legInTheAir(RuntimeNetwork net, NodeRef phase, long end) throws InterruptedException {
+        while (System.nanoTime() < end) {
+            Value p = phase == null ? null : net.controller().value(phase);
+            if (p != null && p.length() >= 2 && p.element(1) > 0.5) {
+                Thread.sleep(100); // well into the swing, the foot up
+                return (int) p.element(0);
+            }
+            Thread.sleep(2);
+        }
+        return -1;
+    }
+
+    private static boolean isTrue(RuntimeNetwork net, NodeRef ref) {
+        Value v = ref == null ? null : net.controller().value(ref);
+        return v != null && v.asBoolean();
+    }
+
+    private static List<NodeRef> sensors(RuntimeNetwork net, String channel) {
+        return net.readDefinition(def -> {
+            List<NodeRef> refs = new ArrayList<>();
+            for (NodeRef ref : SimBridge.nodesOf(def, RoqSensor.class)) {
+                if (channel.equals(def.node(ref).parameter("channel"))) {
+                    refs.add(ref);
+                }
+            }
+            return refs;
+        });
+    }
+
+    private static NodeRef dataNamed(RuntimeNetwork net, String name) {
+        return net.readDefinition(def -> {
+            for (ModuleInfo m : def.modules()) {
+                for (NodeInfo n : m.nodes()) {
+                    if (n.name().equals(name)) {
+                        return new NodeRef(m.name(), n.name());
+                    }
+                }
+            }
+            return null;
+        });
+    }
+
+    private static double parameter(NodeInfo node, String name, double fallback) {
+        String text = node.parameter(name);
+        return text == null ? fallback : Double.parseDouble(text.strip());
+    }
+
+    /** "reflex loaded" / "reflex unloaded" with the thresholds. */
+    String describe() {
+        return String.format(Locale.ROOT, "module %s %s (thresholds tilt %.2f rad, rate %.2f rad/s)", reflexModule,
+                reflexLoaded ? "loaded" : "unloaded", tilt, rate);
+    }
+}

@@ -53,8 +53,9 @@ public final class DemoCommand implements Callable<Integer> {
     /** The window and the figures are refreshed this often; the progress line is printed each second. */
     private static final long FRAME_MILLIS = 100;
 
-    @Option(names = "--for", defaultValue = "30", paramLabel = "DURATION", converter = DurationText.class,
-            description = "how long to run: 30s, 2m, or plain seconds (default 30)")
+    @Option(names = "--for", defaultValue = "100", paramLabel = "DURATION", converter = DurationText.class,
+            description = "how long to run: 30s, 2m, or plain seconds (default 100: long enough to cross the"
+                    + " crossing course's three bands of fragile cells)")
     Duration runFor;
 
     @Option(names = "--gui", description = "show the robot live in a window (top and side views, live figures)")

@@ -37,6 +37,18 @@ public class CrawlGait extends Relation {
     static final int[] ORDER = {3, 1, 2, 0};
     /** The part of the cycle at the start of each quarter before its leg lifts (time for the body to shift). */
     private double shift;
+    /** The most the body turns per stance, rad, whatever {@code steer} says. */
+    static final double MAX_TURN = 0.3;
+    /** The most the turn changes per firing, rad per stance. */
+    private static final double TURN_RATE = 0.002;
+    /** The turn the feet follow now, rad per stance (positive: to the left). */
+    private double turnPerStance;
+    /** Each foot's turn about the body's centre now, rad. */
+    private final double[] rotation = new double[LEGS];
+    /** Each foot's turn when its swing began, rad. */
+    private final double[] liftRotation = new double[LEGS];
+    /** Whether each leg was swinging at the last firing. */
+    private final boolean[] swung = new boolean[LEGS];
     /** The part of the cycle each leg is in the air: the duty factor is 1 − swing. */
     private double swing;
 
@@ -114,16 +126,20 @@ public class CrawlGait extends Relation {
     @Override
     protected void compute(RelationContext c) {
         double now = c.seconds();
-        boolean probes = c.inputCount() > 0 && c.input(0) != null;
+        int verdictIn = c.inputIndex("probe verdict");
+        boolean probes = verdictIn >= 0 && c.input(verdictIn) != null;
         if (probingLeg >= 0) {
-            awaitVerdict(c, probes);
+            awaitVerdict(c, probes ? c.input(verdictIn) : null);
         }
+        steer(c);
+        double advanced = 0;
         if (!Double.isNaN(lastSeconds) && probingLeg < 0) {
             // a held gait does not fire: its phase waits; after a resume it goes on from there
             double before = phase;
             phase += Math.min(maxStep, Math.max(0, now - lastSeconds)) / cycle;
             phase -= Math.floor(phase);
             stopAtTouchdown(before, probes);
+            advanced = phase - before + (phase < before ? 1 : 0);
         }
         lastSeconds = now;
         int quarter = Math.min(3, (int) (phase * 4));
@@ -135,12 +151,20 @@ public class CrawlGait extends Relation {
             double x;
             double lift = 0;
             double y = Math.signum(home[3 * leg + 1]) * side[leg];
+            double turn;
             if (leg == probingLeg) {
                 x = stride / 2 - shorten[leg];
                 lift = clearance / 2;
                 inAir = true;
+                turn = rotation[leg];
             } else if (u < swing) {
                 double s = u / swing;
+                if (!swung[leg]) {
+                    swung[leg] = true;
+                    liftRotation[leg] = rotation[leg];
+                }
+                rotation[leg] = liftRotation[leg] + (turnPerStance / 2 - liftRotation[leg]) * s;
+                turn = rotation[leg];
                 if (side[leg] != stance) {
                     double from = side[leg];
                     y = Math.signum(home[3 * leg + 1]) * (from + (stance - from) * s);
@@ -158,14 +182,21 @@ public class CrawlGait extends Relation {
             } else {
                 double s = (u - swing) / (1 - swing);
                 x = stride / 2 - shorten[leg] - stride * s;
+                swung[leg] = false;
+                rotation[leg] -= turnPerStance * advanced / (1 - swing);
+                turn = rotation[leg];
             }
-            feet[3 * leg] = home[3 * leg] + x;
-            feet[3 * leg + 1] = y;
+            // turning: the feet on the ground all turn by the same -turnPerStance per stance about the body's
+            // centre, so the body turns by +turnPerStance on the ground; a swing sets its foot down turned by half
+            // of it the other way
+            double fx = home[3 * leg] + x;
+            feet[3 * leg] = fx * Math.cos(turn) - y * Math.sin(turn);
+            feet[3 * leg + 1] = fx * Math.sin(turn) + y * Math.cos(turn);
             feet[3 * leg + 2] = home[3 * leg + 2] + lift;
         }
         c.output(0, Value.ofDoubles(feet));
         if (c.outputCount() > 1) {
-            c.output(1, c.inputCount() > 0
+            c.output(1, verdictIn >= 0
                     ? Value.ofDoubles(ORDER[quarter], inAir ? 1 : 0, probingLeg >= 0 ? attempt : 0)
                     : Value.ofDoubles(ORDER[quarter], inAir ? 1 : 0));
         }
@@ -191,13 +222,23 @@ public class CrawlGait extends Relation {
         attempt++;
     }
 
-    private void awaitVerdict(RelationContext c, boolean probes) {
-        if (!probes) {
+    /**
+     * Follows the Data named {@code steer} (rad per stance, e.g. from {@link HoldCourse}) when it is connected and
+     * there, else goes straight; the turn changes by at most {@link #TURN_RATE} per firing so the feet do not jump.
+     */
+    private void steer(RelationContext c) {
+        Value wished = c.inputIndex("steer") >= 0 ? c.input("steer") : null;
+        double target = wished == null || wished.length() < 1 ? 0 : wished.element(0);
+        target = Math.max(-MAX_TURN, Math.min(MAX_TURN, target));
+        turnPerStance += Math.max(-TURN_RATE, Math.min(TURN_RATE, target - turnPerStance));
+    }
+
+    private void awaitVerdict(RelationContext c, Value v) {
+        if (v == null) {
             probingLeg = -1; // Probing unloaded: step on
             unprobedSteps++;
             return;
         }
-        Value v = c.input(0);
         if (v.length() < 3 || (long) v.element(2) != attempt || (int) v.element(0) != probingLeg) {
             return;
         }

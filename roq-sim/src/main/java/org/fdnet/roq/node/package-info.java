@@ -1,8 +1,11 @@
 /**
  * RoQ's nodes, usable by {@code class} in a {@code .fdn}: a {@link org.fdnet.roq.node.RoqSensor} for each
  * sensor (parameter {@code channel}), {@link org.fdnet.roq.node.JointTargets} for the servos, and the
- * Relations of the motion network (stand, crawl gait, keep balance, probe the ground, posture integration,
- * inverse kinematics, fall detection, the tilt reflex).
+ * Relations of the motion network (stand, crawl gait, keep balance, hold course, probe the ground, posture
+ * integration, inverse kinematics, fall detection, the tilt reflex). Relations act on what a real RoQ senses, never
+ * on ground truth ({@code body_position}, {@code centre_of_mass}: for measurement and tests only);
+ * {@link org.fdnet.roq.node.SensedFeet} turns joint angles, sole forces and attitude into feet and centre of
+ * pressure for the closed loops.
  *
  * <pre>
  *   simulator snapshot ──SimBridge──▶ RoqSensor Datas (attitude, joint angles, foot forces…)
@@ -14,6 +17,10 @@
  *                             ▲                                              │
  *                             └────────── probe verdict {leg, ±1, attempt} ──┤
  *                                         probe press (12) ──▶ PostureIntegration
+ *
+ *   closed loops (every 10 ms):
+ *   gait phase, joint angles, foot forces, attitude ──▶ KeepBalance ──balance shift (12)──▶ PostureIntegration
+ *   imu gyro, attitude, joint angles, foot forces, gait phase ──▶ HoldCourse ──steer (rad per stance)──▶ CrawlGait
  *
  *   tilt reflex (no period, fires on every snapshot):
  *   attitude, imu gyro, gait feet, gait phase ──▶ TiltReflex ──reflex press (12)──▶ PostureIntegration ──▶ IK

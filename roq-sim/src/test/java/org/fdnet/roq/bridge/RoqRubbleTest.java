@@ -131,11 +131,10 @@ class RoqRubbleTest {
     }
 
     @Test
-    void shouldCrossTwoMetresOfRubbleFindingAndAvoidingAFragileCellWithoutFalling() throws Exception {
+    void shouldFindAndAvoidAFragileCellOnTheCrossingWithoutFalling() throws Exception {
         Run r = run("crossing", 100);
         assertThat(r.fallen()).as("fallen").isFalse();
-        // the rubble begins 0.6 m around the start; the front feet stand 0.35 m ahead of the body's centre
-        assertThat(r.distance()).as("metres walked: the front feet crossed 2 m of rubble").isGreaterThanOrEqualTo(2.25);
+        // how far it walks is RoqCoursesTest's, across seeds and with noise, with margin below the measured median
         assertThat(r.fragileFound()).as("footholds that gave way under the probe (Probing/fragile found)")
                 .isGreaterThanOrEqualTo(1);
         assertThat(r.fragileAvoided()).as("of them, avoided by a shorter step that held (Probing/fragile avoided)")

@@ -1,0 +1,188 @@
+package org.fdnet.roq.node;
+
+import static org.fdnet.roq.sim.RoqGeometry.LEGS;
+
+import java.util.Locale;
+import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.Relation;
+import org.fdnet.runtime.RelationContext;
+import org.fdnet.runtime.Value;
+
+/**
+ * Heading and track hold: estimates where RoQ faces and how far it has strayed from its course line (the straight
+ * line ahead of where it started) from what it senses, and steers the crawl back onto that line.
+ *
+ * <p>The heading comes from the IMU's gyro (a Data named {@code imu gyro}, body-frame rates, rad/s), turned into the
+ * heading's rate by the inclinometer's {@code attitude}. Its bias is learnt slowly (20 s) from leg odometry: the feet
+ * that bear load (sole force over {@code contact} N, default 20, and not the leg the {@code gait phase} has in the
+ * air) stay where they are on the ground, so the way their positions (forward kinematics of the measured joint
+ * angles, levelled by the attitude, {@link SensedFeet}) turned in the body frame between two firings is the body's
+ * own turn, reversed. Without a gyro that turn is the heading's. The position along and across the line is dead
+ * reckoning along the heading at the crawl's {@code speed} (m/s, default 0.03): the feet slip too much under the
+ * body's sway for their own odometry to tell how far it went (measured: it saw a fraction of the way).
+ *
+ * <p>The steering: the heading wished for is −{@code track} × lateral error (rad per m, default 1.5), at most
+ * {@code maxHeading} rad (default 0.35) off the line; the turn is {@code gain} × (wished − estimated heading)
+ * (default 0.8), at most {@code maxTurn} rad per stance (default 0.25). Outputs (by name, when connected):
+ * {@code steer} the turn, rad per stance ({@link CrawlGait} reads it); {@code heading} the estimated heading, rad;
+ * {@code track} the estimate {x, y, heading} from the start, m, m, rad.
+ */
+public class HoldCourse extends Relation {
+    private final SensedFeet now = new SensedFeet();
+    private final double[] before = new double[3 * LEGS];
+    private final boolean[] loaded = new boolean[LEGS];
+    private boolean haveBefore;
+    private double contact;
+    private double speed;
+    private double trackGain;
+    private double gain;
+    private double maxHeading;
+    private double maxTurn;
+    private double x;
+    private double y;
+    private double heading;
+    private double lastSeconds = Double.NaN;
+    /** The gyro's yaw-rate bias learnt so far, rad/s. */
+    private double gyroBias;
+    /** How long the gyro's bias takes to learn from the feet, s. */
+    private static final double BIAS_TIME = 20;
+
+    @Override
+    protected void init(NodeParameters p) {
+        contact = p.doubleValue("contact", 20);
+        speed = p.doubleValue("speed", 0.03);
+        if (speed < 0 || speed > 0.5) {
+            throw p.invalid("speed", "must lie between 0 and 0.5 m/s, was " + speed);
+        }
+        trackGain = p.doubleValue("track", 1.5);
+        gain = p.doubleValue("gain", 0.8);
+        maxHeading = p.doubleValue("maxHeading", 0.35);
+        maxTurn = p.doubleValue("maxTurn", 0.25);
+        if (contact <= 0) {
+            throw p.invalid("contact", "must be more than 0 N, was " + contact);
+        }
+        if (trackGain < 0 || gain < 0) {
+            throw p.invalid(trackGain < 0 ? "track" : "gain", "must not be negative");
+        }
+        if (maxHeading <= 0 || maxHeading > 1.5) {
+            throw p.invalid("maxHeading", "must lie in (0, 1.5] rad, was " + maxHeading);
+        }
+        if (maxTurn <= 0 || maxTurn > 0.3) {
+            throw p.invalid("maxTurn", "must lie in (0, 0.3] rad per stance, was " + maxTurn);
+        }
+    }
+
+    @Override
+    protected void compute(RelationContext c) {
+        if (!now.read(SensedFeet.named(c, "joint angles"), SensedFeet.named(c, "foot forces"),
+                SensedFeet.named(c, "attitude"))) {
+            return;
+        }
+        double seconds = c.seconds();
+        if (!Double.isNaN(lastSeconds) && seconds - lastSeconds < KeepBalance.STEP) {
+            return; // the joint angles change every tick: act on them every 10 ms
+        }
+        double dt = Double.isNaN(lastSeconds) ? 0 : seconds - lastSeconds;
+        lastSeconds = seconds;
+        Value gyro = SensedFeet.named(c, "imu gyro");
+        Value attitude = SensedFeet.named(c, "attitude");
+        double gyroTurn = Double.NaN;
+        if (gyro != null && gyro.length() >= 3 && attitude != null && attitude.length() >= 2) {
+            // the heading's rate from the body-frame rates: (sin roll * q + cos roll * r) / cos pitch
+            double roll = attitude.element(0);
+            double rate = (Math.sin(roll) * gyro.element(1) + Math.cos(roll) * gyro.element(2))
+                    / Math.cos(attitude.element(1));
+            gyroTurn = (rate - gyroBias) * dt;
+        }
+        if (haveBefore) {
+            odometry(swinging(c), gyroTurn, dt);
+            // dead reckoning along the heading at the crawl's speed: the feet slip too much under the body's sway
+            // for their own odometry to tell how far it went (measured: it saw a fraction of the way)
+            x += speed * dt * Math.cos(heading);
+            y += speed * dt * Math.sin(heading);
+        }
+        System.arraycopy(now.position, 0, before, 0, before.length);
+        int swinging = swinging(c);
+        for (int leg = 0; leg < LEGS; leg++) {
+            loaded[leg] = now.force[leg] > contact && leg != swinging;
+        }
+        haveBefore = true;
+        double wished = clamp(-trackGain * y, maxHeading);
+        double turn = clamp(gain * (wished - heading), maxTurn);
+        put(c, "steer", Value.ofDoubles(turn));
+        put(c, "heading", Value.of(heading));
+        put(c, "track", Value.ofDoubles(x, y, heading));
+        c.report(String.format(Locale.ROOT, "track %.3f m, heading %.3f rad, turn %.3f", y, heading, turn));
+    }
+
+    /**
+     * The body's turn and move since the last firing, from the feet loaded then and now: the best rigid motion of
+     * their body-frame positions (2-D Procrustes), reversed. {@code gyroTurn}: the gyro's turn, or NaN.
+     */
+    private void odometry(int swinging, double gyroTurn, double dt) {
+        double bx = 0;
+        double by = 0;
+        double nx = 0;
+        double ny = 0;
+        int n = 0;
+        for (int leg = 0; leg < LEGS; leg++) {
+            if (loaded[leg] && now.force[leg] > contact && leg != swinging) {
+                bx += before[3 * leg];
+                by += before[3 * leg + 1];
+                nx += now.position[3 * leg];
+                ny += now.position[3 * leg + 1];
+                n++;
+            }
+        }
+        if (n < 2) {
+            if (!Double.isNaN(gyroTurn)) {
+                heading += gyroTurn;
+            }
+            return;
+        }
+        bx /= n;
+        by /= n;
+        nx /= n;
+        ny /= n;
+        double cross = 0;
+        double dot = 0;
+        for (int leg = 0; leg < LEGS; leg++) {
+            if (loaded[leg] && now.force[leg] > contact && leg != swinging) {
+                double ax = before[3 * leg] - bx;
+                double ay = before[3 * leg + 1] - by;
+                double qx = now.position[3 * leg] - nx;
+                double qy = now.position[3 * leg + 1] - ny;
+                cross += ax * qy - ay * qx;
+                dot += ax * qx + ay * qy;
+            }
+        }
+        double feetTurn = -Math.atan2(cross, dot);
+        double turn = feetTurn;
+        if (!Double.isNaN(gyroTurn)) {
+            // the gyro turns with the body whatever the feet do (they slip); its bias is learnt slowly from the
+            // feet's turn, which has no bias but slips
+            gyroBias += (gyroTurn - feetTurn) / BIAS_TIME;
+            turn = gyroTurn;
+        }
+        heading += turn;
+    }
+
+    /** The leg the gait's phase (the Data named {@code gait phase}) has in the air or probing, else -1. */
+    private static int swinging(RelationContext c) {
+        Value phase = SensedFeet.named(c, "gait phase");
+        boolean up = phase != null && phase.length() > 1
+                && (phase.element(1) > 0.5 || phase.length() > 2 && phase.element(2) > 0.5);
+        return up ? (int) phase.element(0) : -1;
+    }
+
+    private static void put(RelationContext c, String name, Value v) {
+        int i = c.outputIndex(name);
+        if (i >= 0) {
+            c.output(i, v);
+        }
+    }
+
+    private static double clamp(double v, double limit) {
+        return Math.max(-limit, Math.min(limit, v));
+    }
+}

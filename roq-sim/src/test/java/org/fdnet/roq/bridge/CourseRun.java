@@ -1,0 +1,122 @@
+package org.fdnet.roq.bridge;
+
+import java.nio.file.Path;
+import java.util.Locale;
+import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.netinfo.NodeRef;
+import org.fdnet.netinfo.xml.NetworkRepository;
+import org.fdnet.roq.sim.Course;
+import org.fdnet.roq.sim.RoqSimulator;
+import org.fdnet.roq.sim.SensorSnapshot;
+import org.fdnet.roq.sim.SimMode;
+import org.fdnet.roq.sim.SimOptions;
+import org.fdnet.runtime.DrivenClock;
+import org.fdnet.runtime.RuntimeNetwork;
+import org.fdnet.runtime.RuntimeOptions;
+import org.fdnet.runtime.Value;
+
+/**
+ * One stepped run of a RoQ network on a course with seeded sensor noise (as in the demo), measured by ground truth
+ * every 10 ms: how far RoQ walked along the course, how far it strayed from its course line and heading (each
+ * averaged over {@link #WINDOW} samples, one crawl cycle: the body sways ±0.15 m and ±0.1 rad within a cycle by
+ * design), its largest tilt, whether it fell, and which fragile cells broke under a probe and which under a loaded
+ * foot.
+ *
+ * @param distance              m walked along x
+ * @param trackError            largest |y − y at the start| averaged over a cycle, m
+ * @param headingError          largest |yaw − yaw at the start| averaged over a cycle, rad
+ * @param finalHeading          yaw at the end minus at the start, rad
+ * @param tilt                  largest |roll| or |pitch|, rad
+ * @param fallen                FallDetector's latch at the end
+ * @param probeBroken           cells that broke while a probe pressed (on purpose)
+ * @param loadedBreakthroughs   cells that broke while no probe pressed: under a foot that had been accepted and loaded
+ */
+record CourseRun(String label, double distance, double trackError, double headingError, double finalHeading,
+                 double tilt, boolean fallen, int probeBroken, int loadedBreakthroughs) {
+    /** Samples (10 ms each) over which the track and heading are averaged: 4.5 s, roq-rubble's crawl cycle. */
+    static final int WINDOW = 450;
+
+    /** Runs {@code network} on {@code course} for {@code seconds} of simulated time, noise seed {@code noise}. */
+    static CourseRun of(String label, Path network, Course course, int seconds, long noise, String... unloaded)
+            throws Exception {
+        return of(label, NetworkRepository.load(network), course, seconds, noise, unloaded);
+    }
+
+    /** Runs {@code network} (e.g. with changed parameters) on {@code course}. */
+    static CourseRun of(String label, NetworkInfo network, Course course, int seconds, long noise, String... unloaded)
+            throws Exception {
+        SimOptions options = SimOptions.of(SimMode.STEPPED).withNoise(noise).withRangeSensors(false);
+        try (RoqSimulator sim = RoqSimulator.open(course, options);
+             RuntimeNetwork net = RuntimeNetwork.start(network,
+                     RuntimeOptions.defaults().drivenClock(new DrivenClock(0)))) {
+            for (String module : unloaded) {
+                if (!net.controller().unload(module).executed()) {
+                    throw new IllegalStateException("could not unload " + module);
+                }
+            }
+            SimBridge bridge = SimBridge.stepped(net, sim, 0, 1);
+            bridge.run(1);
+            SensorSnapshot s = bridge.lastSnapshot();
+            double x0 = s.groundTruthBodyPosition(0);
+            double y0 = s.groundTruthBodyPosition(1);
+            double yaw0 = s.groundTruthYaw();
+            double track = 0;
+            double[] lastY = new double[WINDOW];
+            double[] lastYaw = new double[WINDOW];
+            double sumY = 0;
+            double sumYaw = 0;
+            double heading = 0;
+            double tilt = 0;
+            int broken = 0;
+            int probeBroken = 0;
+            int loaded = 0;
+            for (int t = 0; t < seconds * 100; t++) {
+                bridge.run(10);
+                s = bridge.lastSnapshot();
+                int slot = t % WINDOW;
+                sumY += s.groundTruthBodyPosition(1) - y0 - lastY[slot];
+                lastY[slot] = s.groundTruthBodyPosition(1) - y0;
+                double yaw = angle(s.groundTruthYaw() - yaw0);
+                sumYaw += yaw - lastYaw[slot];
+                lastYaw[slot] = yaw;
+                if (t >= WINDOW - 1) {
+                    track = Math.max(track, Math.abs(sumY / WINDOW));
+                    heading = Math.max(heading, Math.abs(sumYaw / WINDOW));
+                }
+                tilt = Math.max(tilt, Math.max(Math.abs(s.roll()), Math.abs(s.pitch())));
+                int nowBroken = s.brokenCellCount();
+                if (nowBroken > broken) {
+                    Value phase = value(net, "gait phase", "main");
+                    if (phase != null && phase.length() == 3 && phase.element(2) > 0) {
+                        probeBroken += nowBroken - broken;
+                    } else {
+                        loaded += nowBroken - broken;
+                    }
+                    broken = nowBroken;
+                }
+            }
+            Value fallen = value(net, "fallen", "main");
+            return new CourseRun(label, s.groundTruthBodyPosition(0) - x0, track, heading,
+                    angle(s.groundTruthYaw() - yaw0), tilt, fallen != null && fallen.asBoolean(), probeBroken, loaded);
+        }
+    }
+
+    private static double angle(double a) {
+        return Math.atan2(Math.sin(a), Math.cos(a));
+    }
+
+    static Value value(RuntimeNetwork net, String node, String module) {
+        try {
+            return net.controller().value(NodeRef.parse(node, module));
+        } catch (RuntimeException notLoaded) {
+            return null;
+        }
+    }
+
+    @Override
+    public String toString() {
+        return String.format(Locale.ROOT, "%s: %.3f m, track %.3f m, heading %.3f (end %.3f) rad, tilt %.3f rad,"
+                        + " fallen %s, probe-broken %d, loaded-foot breakthroughs %d", label, distance, trackError,
+                headingError, finalHeading, tilt, fallen, probeBroken, loadedBreakthroughs);
+    }
+}

@@ -34,8 +34,15 @@ final class ExpressionParser {
         double[] variable(String name);
     }
 
+    /**
+     * How deep brackets, conditionals and prefix operators may nest: the parser and the compiled expression
+     * recurse once per level, so an unbounded depth would overflow the stack instead of naming the column.
+     */
+    static final int MAX_DEPTH = 200;
+
     private final String text;
     private int pos;
+    private int depth;
 
     private ExpressionParser(String text) {
         this.text = text;
@@ -79,6 +86,21 @@ final class ExpressionParser {
     }
 
     private Node expr() {
+        enter();
+        try {
+            return conditional();
+        } finally {
+            depth--;
+        }
+    }
+
+    private void enter() {
+        if (++depth > MAX_DEPTH) {
+            throw error("nested deeper than " + MAX_DEPTH + " levels");
+        }
+    }
+
+    private Node conditional() {
         Node cond = or();
         if (eat("?")) {
             Node yes = expr();
@@ -172,6 +194,15 @@ final class ExpressionParser {
     }
 
     private Node unary() {
+        enter();
+        try {
+            return prefixed();
+        } finally {
+            depth--;
+        }
+    }
+
+    private Node prefixed() {
         if (eat("-")) {
             Node n = unary();
             return env -> Vectors.map(n.eval(env), a -> -a);
@@ -206,8 +237,12 @@ final class ExpressionParser {
             n = env -> {
                 double[] v = vector.eval(env);
                 double[] i = index.eval(env);
+                if (i.length != 1) {
+                    throw new IllegalArgumentException("index " + Vectors.text(i) + " is not one number (column "
+                            + column + ")");
+                }
                 int k = (int) Math.round(i[0]);
-                if (i.length != 1 || k < 0 || k >= v.length) {
+                if (k < 0 || k >= v.length) {
                     throw new IllegalArgumentException("index " + Vectors.text(i) + " is outside a vector of "
                             + v.length + " (column " + column + ")");
                 }

@@ -3,6 +3,7 @@ package org.fdnet.runtime.library;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Supplier;
 
 /**
  * A small, safe arithmetic language for {@link Expression} (no script engine, no reflection: only the
@@ -86,17 +87,18 @@ final class ExpressionParser {
     }
 
     private Node expr() {
-        enter();
-        try {
-            return conditional();
-        } finally {
-            depth--;
-        }
+        return nested(this::conditional);
     }
 
-    private void enter() {
+    /** One level deeper: refused past {@link #MAX_DEPTH}. */
+    private Node nested(Supplier<Node> level) {
         if (++depth > MAX_DEPTH) {
             throw error("nested deeper than " + MAX_DEPTH + " levels");
+        }
+        try {
+            return level.get();
+        } finally {
+            depth--;
         }
     }
 
@@ -194,12 +196,7 @@ final class ExpressionParser {
     }
 
     private Node unary() {
-        enter();
-        try {
-            return prefixed();
-        } finally {
-            depth--;
-        }
+        return nested(this::prefixed);
     }
 
     private Node prefixed() {

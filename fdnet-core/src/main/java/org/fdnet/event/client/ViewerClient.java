@@ -8,9 +8,6 @@ import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
@@ -18,7 +15,6 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Consumer;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.wire.ErrorFrame;
-import org.fdnet.event.wire.EventCodec;
 import org.fdnet.event.wire.Frame;
 import org.fdnet.event.wire.FrameReader;
 import org.fdnet.event.wire.FrameWriter;
@@ -27,7 +23,6 @@ import org.fdnet.event.wire.HistoryColumns;
 import org.fdnet.event.wire.LoggedNode;
 import org.fdnet.event.wire.MessageType;
 import org.fdnet.event.wire.Protocol;
-import org.fdnet.event.wire.ProtocolException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -50,24 +45,12 @@ public final class ViewerClient implements AutoCloseable {
     private final OutputStream out;
     private final FrameWriter writer = new FrameWriter();
     private final AtomicInteger requests = new AtomicInteger();
-    private final Map<Integer, Request> open = new ConcurrentHashMap<>();
-    private final Consumer<NetworkEvent> monitorListener;
+    private final LoggerAnswers answers;
     private final Thread reader;
     private volatile IOException failure;
 
-    private static final class Request {
-        final List<Object> items = new ArrayList<>();
-        /** Set for a history asked for as columns: the chunks are read into it, no object per event. */
-        final HistoryColumns columns;
-        final CompletableFuture<List<Object>> done = new CompletableFuture<>();
-
-        Request(HistoryColumns columns) {
-            this.columns = columns;
-        }
-    }
-
     public ViewerClient(String host, int port, String name, Consumer<NetworkEvent> monitorListener) throws IOException {
-        this.monitorListener = monitorListener;
+        this.answers = new LoggerAnswers(monitorListener);
         socket = new Socket();
         socket.setTcpNoDelay(true);
         socket.connect(new InetSocketAddress(host, port), 5000);
@@ -95,7 +78,7 @@ public final class ViewerClient implements AutoCloseable {
     /** Nodes whose name matches: {@code ""} all, {@code Node} any module, {@code Module/Node} exactly. */
     public List<LoggedNode> nodes(String filter) throws IOException {
         int id = requests.incrementAndGet();
-        List<Object> items = call(id, new Request(null), w -> w.begin(MessageType.LIST_NODES).putInt(id).putString(filter));
+        List<Object> items = call(id, new LoggerAnswers.Request(null), w -> w.begin(MessageType.LIST_NODES).putInt(id).putString(filter));
         List<LoggedNode> nodes = new ArrayList<>(items.size());
         items.forEach(o -> nodes.add((LoggedNode) o));
         return nodes;
@@ -103,7 +86,7 @@ public final class ViewerClient implements AutoCloseable {
 
     /** Every event of the nodes with {@code from <= time <= to}, in time order (cache and database merged). */
     public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws IOException {
-        List<Object> items = askHistory(MessageType.HISTORY, sourceIds, from, to, new Request(null));
+        List<Object> items = askHistory(MessageType.HISTORY, sourceIds, from, to, new LoggerAnswers.Request(null));
         List<NetworkEvent> events = new ArrayList<>(items.size());
         items.forEach(o -> events.add((NetworkEvent) o));
         return events;
@@ -114,12 +97,12 @@ public final class ViewerClient implements AutoCloseable {
      * or a String per event, the logger sending numbers as numbers (HISTORY_NUMBERS) — the path for plotting.
      */
     public HistoryColumns historyColumns(int[] sourceIds, long from, long to) throws IOException {
-        Request r = new Request(new HistoryColumns());
+        LoggerAnswers.Request r = new LoggerAnswers.Request(new HistoryColumns());
         askHistory(MessageType.HISTORY_NUMBERS, sourceIds, from, to, r);
         return r.columns;
     }
 
-    private List<Object> askHistory(MessageType type, int[] sourceIds, long from, long to, Request r) throws IOException {
+    private List<Object> askHistory(MessageType type, int[] sourceIds, long from, long to, LoggerAnswers.Request r) throws IOException {
         int id = requests.incrementAndGet();
         return call(id, r, w -> {
             w.begin(type).putInt(id).putInt(sourceIds.length);
@@ -165,8 +148,8 @@ public final class ViewerClient implements AutoCloseable {
         }
     }
 
-    private List<Object> call(int id, Request r, FrameBuilder b) throws IOException {
-        open.put(id, r);
+    private List<Object> call(int id, LoggerAnswers.Request r, FrameBuilder b) throws IOException {
+        answers.open(id, r);
         send(b);
         try {
             return r.done.get(60, TimeUnit.SECONDS);
@@ -178,7 +161,7 @@ public final class ViewerClient implements AutoCloseable {
         } catch (TimeoutException e) {
             throw new IOException("logger did not answer within 60 s", e);
         } finally {
-            open.remove(id);
+            answers.close(id);
         }
     }
 
@@ -186,63 +169,14 @@ public final class ViewerClient implements AutoCloseable {
         try {
             Frame f;
             while ((f = in.read()) != null) {
-                dispatch(f);
+                answers.dispatch(f);
             }
             failure = new IOException("logger closed the connection");
         } catch (IOException e) {
             failure = e;
         } finally {
             IOException why = failure != null ? failure : new IOException("connection closed");
-            open.values().forEach(r -> r.done.completeExceptionally(why));
-        }
-    }
-
-    private void dispatch(Frame f) throws IOException {
-        switch (f.type()) {
-            case HISTORY_CHUNK -> {
-                Request r = open.get(f.getInt());
-                int n = f.getCount(EventCodec.MIN_EVENT_BYTES);
-                if (r != null && r.columns != null) {
-                    r.columns.appendAll(f, n);
-                    return;
-                }
-                for (int i = 0; i < n; i++) {
-                    NetworkEvent e = EventCodec.read(f);
-                    if (r != null) {
-                        r.items.add(e);
-                    }
-                }
-            }
-            case HISTORY_END -> {
-                Request r = open.get(f.getInt());
-                if (r != null) {
-                    r.done.complete(r.items);
-                }
-            }
-            case NODE_LIST -> {
-                Request r = open.get(f.getInt());
-                int n = f.getCount(14);
-                for (int i = 0; i < n; i++) {
-                    LoggedNode node = LoggedNode.read(f);
-                    if (r != null) {
-                        r.items.add(node);
-                    }
-                }
-                if (r != null) {
-                    r.done.complete(r.items);
-                }
-            }
-            case MONITOR_EVENTS -> {
-                int n = f.getCount(EventCodec.MIN_EVENT_BYTES);
-                for (int i = 0; i < n; i++) {
-                    monitorListener.accept(EventCodec.read(f));
-                }
-            }
-            case ERROR -> {
-                ErrorFrame err = ErrorFrame.read(f);
-                throw new IOException("logger closed the viewer connection: " + err.message());
-            }
-            default -> throw new ProtocolException("unexpected " + f.type() + " from the logger");
+            answers.failAll(why);
         }
     }
 

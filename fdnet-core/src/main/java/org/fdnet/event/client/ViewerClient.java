@@ -23,6 +23,7 @@ import org.fdnet.event.wire.HistoryColumns;
 import org.fdnet.event.wire.LoggedNode;
 import org.fdnet.event.wire.MessageType;
 import org.fdnet.event.wire.Protocol;
+import org.fdnet.event.wire.ViewerRequest;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -78,7 +79,7 @@ public final class ViewerClient implements AutoCloseable {
     /** Nodes whose name matches: {@code ""} all, {@code Node} any module, {@code Module/Node} exactly. */
     public List<LoggedNode> nodes(String filter) throws IOException {
         int id = requests.incrementAndGet();
-        List<Object> items = call(id, new LoggerAnswers.Request(null), w -> w.begin(MessageType.LIST_NODES).putInt(id).putString(filter));
+        List<Object> items = call(id, new LoggerAnswers.Request(null), ViewerRequest.listNodes(id, filter)::write);
         List<LoggedNode> nodes = new ArrayList<>(items.size());
         items.forEach(o -> nodes.add((LoggedNode) o));
         return nodes;
@@ -104,33 +105,17 @@ public final class ViewerClient implements AutoCloseable {
 
     private List<Object> askHistory(MessageType type, int[] sourceIds, long from, long to, LoggerAnswers.Request r) throws IOException {
         int id = requests.incrementAndGet();
-        return call(id, r, w -> {
-            w.begin(type).putInt(id).putInt(sourceIds.length);
-            for (int s : sourceIds) {
-                w.putInt(s);
-            }
-            w.putLong(from).putLong(to);
-        });
+        return call(id, r, ViewerRequest.history(type, id, sourceIds, from, to)::write);
     }
 
     /** Starts streaming the nodes' new events to the listener. */
     public void monitor(int... sourceIds) throws IOException {
-        send(w -> {
-            w.begin(MessageType.MONITOR).putInt(sourceIds.length);
-            for (int s : sourceIds) {
-                w.putInt(s);
-            }
-        });
+        send(ViewerRequest.monitor(MessageType.MONITOR, sourceIds)::write);
     }
 
     /** Stops streaming the nodes (none given: all). */
     public void unmonitor(int... sourceIds) throws IOException {
-        send(w -> {
-            w.begin(MessageType.UNMONITOR).putInt(sourceIds.length);
-            for (int s : sourceIds) {
-                w.putInt(s);
-            }
-        });
+        send(ViewerRequest.monitor(MessageType.UNMONITOR, sourceIds)::write);
     }
 
     private interface FrameBuilder {

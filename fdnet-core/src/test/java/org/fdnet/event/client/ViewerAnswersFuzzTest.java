@@ -10,12 +10,16 @@ import java.util.List;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.wire.Frame;
 import org.fdnet.event.wire.FrameReader;
+import org.fdnet.event.wire.FrameWriter;
 import org.fdnet.event.wire.HistoryColumns;
 import org.fdnet.event.wire.ProtocolException;
+import org.fdnet.event.wire.ViewerRequest;
 
 /**
- * Fuzzes what a viewer decodes from the logger's sender port ({@link LoggerAnswers} behind {@link ViewerClient}):
- * frames with history chunks (as events for request 1, as {@link HistoryColumns} for request 2), history ends,
+ * Fuzzes both directions of a viewer's connection to the logger's sender port. First byte odd: the requests the
+ * logger reads ({@link ViewerRequest#read}), each refused with a {@link ProtocolException} or written again as
+ * the viewer writes it and read back equal. First byte even: what a viewer decodes from the logger
+ * ({@link LoggerAnswers} behind {@link ViewerClient}): frames with history chunks (as events for request 1, as {@link HistoryColumns} for request 2), history ends,
  * node lists, monitored events and errors. Any bytes are taken or fail with an {@link IOException} — a
  * {@link ProtocolException} naming what was malformed, or the logger's own ERROR reason — never another
  * exception, a buffer a count merely claims, or a hang. Every event a chunk put in columns must read back (as
@@ -26,14 +30,41 @@ class ViewerAnswersFuzzTest {
     private static final int MAX_FRAME_BYTES = 1 << 16;
 
     @FuzzTest(maxDuration = "10m")
-    void shouldTakeOrRefuseLoggerAnswers(byte[] input) {
+    void shouldTakeOrRefuseLoggerAnswers(byte[] input) throws IOException {
+        if (input.length == 0) {
+            return;
+        }
+        FrameReader in = new FrameReader(new ByteArrayInputStream(input, 1, input.length - 1), MAX_FRAME_BYTES);
+        if ((input[0] & 1) == 1) {
+            requests(in);
+        } else {
+            answers(in);
+        }
+    }
+
+    private static void requests(FrameReader in) throws IOException {
+        try {
+            Frame f;
+            while ((f = in.read()) != null) {
+                ViewerRequest r = ViewerRequest.read(f);
+                FrameWriter w = new FrameWriter();
+                r.write(w);
+                ViewerRequest again = ViewerRequest.read(new FrameReader(new ByteArrayInputStream(w.toBytes()),
+                        Integer.MAX_VALUE).read());
+                assertThat(again).usingRecursiveComparison().isEqualTo(r);
+            }
+        } catch (ProtocolException refused) {
+            assertThat(refused.getMessage()).isNotBlank();
+        }
+    }
+
+    private static void answers(FrameReader in) {
         List<NetworkEvent> monitored = new ArrayList<>();
         LoggerAnswers answers = new LoggerAnswers(monitored::add);
         LoggerAnswers.Request events = new LoggerAnswers.Request(null);
         LoggerAnswers.Request columns = new LoggerAnswers.Request(new HistoryColumns());
         answers.open(1, events);
         answers.open(2, columns);
-        FrameReader in = new FrameReader(new ByteArrayInputStream(input), MAX_FRAME_BYTES);
         try {
             Frame f;
             while ((f = in.read()) != null) {

@@ -7,9 +7,6 @@ import java.io.OutputStream;
 import java.net.Socket;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
@@ -17,7 +14,6 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Consumer;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.wire.ErrorFrame;
-import org.fdnet.event.wire.EventCodec;
 import org.fdnet.event.wire.Frame;
 import org.fdnet.event.wire.FrameReader;
 import org.fdnet.event.wire.FrameWriter;
@@ -28,6 +24,7 @@ import org.fdnet.event.wire.LoggedRun;
 import org.fdnet.event.wire.MessageType;
 import org.fdnet.event.wire.Protocol;
 import org.fdnet.event.wire.ProtocolException;
+import org.fdnet.event.wire.ViewerRequest;
 import org.fdnet.tls.TransportSecurity;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -51,24 +48,12 @@ public final class ViewerClient implements AutoCloseable {
     private final OutputStream out;
     private final FrameWriter writer = new FrameWriter();
     private final AtomicInteger requests = new AtomicInteger();
-    private final Map<Integer, Request> open = new ConcurrentHashMap<>();
-    private final Consumer<NetworkEvent> monitorListener;
+    private final LoggerAnswers answers;
     private final Thread reader;
     private volatile IOException failure;
 
-    private static final class Request {
-        final List<Object> items = new ArrayList<>();
-        /** Set for a history asked for as columns: the chunks are read into it, no object per event. */
-        final HistoryColumns columns;
-        final CompletableFuture<List<Object>> done = new CompletableFuture<>();
-
-        Request(HistoryColumns columns) {
-            this.columns = columns;
-        }
-    }
-
     public ViewerClient(String host, int port, String name, Consumer<NetworkEvent> monitorListener) throws IOException {
-        this.monitorListener = monitorListener;
+        this.answers = new LoggerAnswers(monitorListener);
         socket = TransportSecurity.connect(host, port, 5000);
         out = new BufferedOutputStream(socket.getOutputStream());
         FrameReader in = new FrameReader(new BufferedInputStream(socket.getInputStream()), Protocol.DEFAULT_MAX_FRAME_BYTES);
@@ -94,7 +79,7 @@ public final class ViewerClient implements AutoCloseable {
     /** Nodes whose name matches: {@code ""} all, {@code Node} any module, {@code Module/Node} exactly. */
     public List<LoggedNode> nodes(String filter) throws IOException {
         int id = requests.incrementAndGet();
-        List<Object> items = call(id, new Request(null), w -> w.begin(MessageType.LIST_NODES).putInt(id).putString(filter));
+        List<Object> items = call(id, new LoggerAnswers.Request(null), ViewerRequest.listNodes(id, filter)::write);
         List<LoggedNode> nodes = new ArrayList<>(items.size());
         items.forEach(o -> nodes.add((LoggedNode) o));
         return nodes;
@@ -103,7 +88,7 @@ public final class ViewerClient implements AutoCloseable {
     /** Every stream of events the logger holds, with the network run each belongs to. */
     public List<LoggedRun> runs() throws IOException {
         int id = requests.incrementAndGet();
-        List<Object> items = call(id, new Request(null), w -> w.begin(MessageType.LIST_RUNS).putInt(id));
+        List<Object> items = call(id, new LoggerAnswers.Request(null), ViewerRequest.listRuns(id)::write);
         List<LoggedRun> runs = new ArrayList<>(items.size());
         items.forEach(o -> runs.add((LoggedRun) o));
         return runs;
@@ -111,7 +96,7 @@ public final class ViewerClient implements AutoCloseable {
 
     /** Every event of the nodes with {@code from <= time <= to}, in time order (cache and database merged). */
     public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws IOException {
-        List<Object> items = askHistory(MessageType.HISTORY, sourceIds, from, to, new Request(null));
+        List<Object> items = askHistory(MessageType.HISTORY, sourceIds, from, to, new LoggerAnswers.Request(null));
         List<NetworkEvent> events = new ArrayList<>(items.size());
         items.forEach(o -> events.add((NetworkEvent) o));
         return events;
@@ -122,40 +107,24 @@ public final class ViewerClient implements AutoCloseable {
      * or a String per event, the logger sending numbers as numbers (HISTORY_NUMBERS) — the path for plotting.
      */
     public HistoryColumns historyColumns(int[] sourceIds, long from, long to) throws IOException {
-        Request r = new Request(new HistoryColumns());
+        LoggerAnswers.Request r = new LoggerAnswers.Request(new HistoryColumns());
         askHistory(MessageType.HISTORY_NUMBERS, sourceIds, from, to, r);
         return r.columns;
     }
 
-    private List<Object> askHistory(MessageType type, int[] sourceIds, long from, long to, Request r) throws IOException {
+    private List<Object> askHistory(MessageType type, int[] sourceIds, long from, long to, LoggerAnswers.Request r) throws IOException {
         int id = requests.incrementAndGet();
-        return call(id, r, w -> {
-            w.begin(type).putInt(id).putInt(sourceIds.length);
-            for (int s : sourceIds) {
-                w.putInt(s);
-            }
-            w.putLong(from).putLong(to);
-        });
+        return call(id, r, ViewerRequest.history(type, id, sourceIds, from, to)::write);
     }
 
     /** Starts streaming the nodes' new events to the listener. */
     public void monitor(int... sourceIds) throws IOException {
-        send(w -> {
-            w.begin(MessageType.MONITOR).putInt(sourceIds.length);
-            for (int s : sourceIds) {
-                w.putInt(s);
-            }
-        });
+        send(ViewerRequest.monitor(MessageType.MONITOR, sourceIds)::write);
     }
 
     /** Stops streaming the nodes (none given: all). */
     public void unmonitor(int... sourceIds) throws IOException {
-        send(w -> {
-            w.begin(MessageType.UNMONITOR).putInt(sourceIds.length);
-            for (int s : sourceIds) {
-                w.putInt(s);
-            }
-        });
+        send(ViewerRequest.monitor(MessageType.UNMONITOR, sourceIds)::write);
     }
 
     private interface FrameBuilder {
@@ -173,8 +142,8 @@ public final class ViewerClient implements AutoCloseable {
         }
     }
 
-    private List<Object> call(int id, Request r, FrameBuilder b) throws IOException {
-        open.put(id, r);
+    private List<Object> call(int id, LoggerAnswers.Request r, FrameBuilder b) throws IOException {
+        answers.open(id, r);
         send(b);
         try {
             return r.done.get(60, TimeUnit.SECONDS);
@@ -186,7 +155,7 @@ public final class ViewerClient implements AutoCloseable {
         } catch (TimeoutException e) {
             throw new IOException("logger did not answer within 60 s", e);
         } finally {
-            open.remove(id);
+            answers.close(id);
         }
     }
 
@@ -194,76 +163,14 @@ public final class ViewerClient implements AutoCloseable {
         try {
             Frame f;
             while ((f = in.read()) != null) {
-                dispatch(f);
+                answers.dispatch(f);
             }
             failure = new IOException("logger closed the connection");
         } catch (IOException e) {
             failure = e;
         } finally {
             IOException why = failure != null ? failure : new IOException("connection closed");
-            open.values().forEach(r -> r.done.completeExceptionally(why));
-        }
-    }
-
-    private void dispatch(Frame f) throws IOException {
-        switch (f.type()) {
-            case HISTORY_CHUNK -> {
-                Request r = open.get(f.getInt());
-                int n = f.getCount(EventCodec.MIN_EVENT_BYTES);
-                if (r != null && r.columns != null) {
-                    r.columns.appendAll(f, n);
-                    return;
-                }
-                for (int i = 0; i < n; i++) {
-                    NetworkEvent e = EventCodec.read(f);
-                    if (r != null) {
-                        r.items.add(e);
-                    }
-                }
-            }
-            case HISTORY_END -> {
-                Request r = open.get(f.getInt());
-                if (r != null) {
-                    r.done.complete(r.items);
-                }
-            }
-            case NODE_LIST -> {
-                Request r = open.get(f.getInt());
-                int n = f.getCount(14);
-                for (int i = 0; i < n; i++) {
-                    LoggedNode node = LoggedNode.read(f);
-                    if (r != null) {
-                        r.items.add(node);
-                    }
-                }
-                if (r != null) {
-                    r.done.complete(r.items);
-                }
-            }
-            case RUN_LIST -> {
-                Request r = open.get(f.getInt());
-                int n = f.getCount(LoggedRun.MIN_BYTES);
-                for (int i = 0; i < n; i++) {
-                    LoggedRun run = LoggedRun.read(f);
-                    if (r != null) {
-                        r.items.add(run);
-                    }
-                }
-                if (r != null) {
-                    r.done.complete(r.items);
-                }
-            }
-            case MONITOR_EVENTS -> {
-                int n = f.getCount(EventCodec.MIN_EVENT_BYTES);
-                for (int i = 0; i < n; i++) {
-                    monitorListener.accept(EventCodec.read(f));
-                }
-            }
-            case ERROR -> {
-                ErrorFrame err = ErrorFrame.read(f);
-                throw new IOException("logger closed the viewer connection: " + err.message());
-            }
-            default -> throw new ProtocolException("unexpected " + f.type() + " from the logger");
+            answers.failAll(why);
         }
     }
 

@@ -8,6 +8,7 @@
  *                            ▼                              │
  *                         logger receiver ─▶ cache ─▶ writer ─COPY─▶ PostgreSQL
  *   viewer ─ViewerClient─▶ logger sender: LIST_NODES, HISTORY, MONITOR/UNMONITOR
+ *   logger sender ─frames─▶ ViewerClient's reader ─LoggerAnswers─▶ open requests' answers, monitor listener
  * </pre>
  */
 package org.fdnet.event.client;

@@ -5,6 +5,8 @@
  * <pre>
  *   NetworkEvent ──EventCodec──▶ FrameWriter ──u32 length · u8 type · payload──▶ socket
  *   socket ──FrameReader (length ≤ max, whole frame or "truncated")──▶ Frame ──EventCodec──▶ NetworkEvent
+ *   a core's EVENTS frame ──EventsFrame.check (every event, no trailing bytes)──▶ the receiver takes its events
+ *   a viewer's request ──ViewerRequest.write──▶ logger ──ViewerRequest.read (checked whole)──▶ sender server
  *
  *   a plot's history (HISTORY_NUMBERS): logger ──EventCodec.writeNumeric, bytes kept per cached event──▶
  *       HISTORY_CHUNK ──HistoryColumns.appendAll──▶ times[] · sources[] · numbers[] (text, events on demand)

@@ -30,7 +30,15 @@ public final class LayoutRepository {
     }
 
     public static NetworkLayout load(Path file) throws NetworkFileException {
-        GuardedXmlReader xml = new GuardedXmlReader(file, BundledDtd.FDG);
+        return read(new GuardedXmlReader(file, BundledDtd.FDG));
+    }
+
+    /** Reads a side file held in memory; problems name {@code source}. */
+    static NetworkLayout read(Path source, byte[] content) throws NetworkFileException {
+        return read(new GuardedXmlReader(source, content, BundledDtd.FDG));
+    }
+
+    private static NetworkLayout read(GuardedXmlReader xml) throws NetworkFileException {
         FdgElement root = xml.read(JaxbContexts.layout(), FdgElement.class);
         if (root == null || !xml.problems().isEmpty()) {
             throw new NetworkFileException(xml.problems());

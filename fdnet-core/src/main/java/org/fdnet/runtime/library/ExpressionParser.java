@@ -3,6 +3,7 @@ package org.fdnet.runtime.library;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Supplier;
 
 /**
  * A small, safe arithmetic language for {@link Expression} (no script engine, no reflection: only the
@@ -34,8 +35,15 @@ final class ExpressionParser {
         double[] variable(String name);
     }
 
+    /**
+     * How deep brackets, conditionals and prefix operators may nest: the parser and the compiled expression
+     * recurse once per level, so an unbounded depth would overflow the stack instead of naming the column.
+     */
+    static final int MAX_DEPTH = 200;
+
     private final String text;
     private int pos;
+    private int depth;
 
     private ExpressionParser(String text) {
         this.text = text;
@@ -79,6 +87,22 @@ final class ExpressionParser {
     }
 
     private Node expr() {
+        return nested(this::conditional);
+    }
+
+    /** One level deeper: refused past {@link #MAX_DEPTH}. */
+    private Node nested(Supplier<Node> level) {
+        if (++depth > MAX_DEPTH) {
+            throw error("nested deeper than " + MAX_DEPTH + " levels");
+        }
+        try {
+            return level.get();
+        } finally {
+            depth--;
+        }
+    }
+
+    private Node conditional() {
         Node cond = or();
         if (eat("?")) {
             Node yes = expr();
@@ -172,6 +196,10 @@ final class ExpressionParser {
     }
 
     private Node unary() {
+        return nested(this::prefixed);
+    }
+
+    private Node prefixed() {
         if (eat("-")) {
             Node n = unary();
             return env -> Vectors.map(n.eval(env), a -> -a);
@@ -206,8 +234,12 @@ final class ExpressionParser {
             n = env -> {
                 double[] v = vector.eval(env);
                 double[] i = index.eval(env);
+                if (i.length != 1) {
+                    throw new IllegalArgumentException("index " + Vectors.text(i) + " is not one number (column "
+                            + column + ")");
+                }
                 int k = (int) Math.round(i[0]);
-                if (i.length != 1 || k < 0 || k >= v.length) {
+                if (k < 0 || k >= v.length) {
                     throw new IllegalArgumentException("index " + Vectors.text(i) + " is outside a vector of "
                             + v.length + " (column " + column + ")");
                 }

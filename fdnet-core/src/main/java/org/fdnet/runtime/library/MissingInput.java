@@ -26,7 +26,9 @@ final class MissingInput extends RuntimeException {
             }
             int index = -1;
             if (name.startsWith("in") && name.length() > 2 && name.substring(2).chars().allMatch(Character::isDigit)) {
-                index = Integer.parseInt(name.substring(2));
+                String digits = name.substring(2);
+                // in99999999999 is an input no Relation has, not a number format crash
+                index = digits.length() > 9 ? Integer.MAX_VALUE : Integer.parseInt(digits);
                 if (index >= context.inputCount()) {
                     throw new IllegalArgumentException(context.self() + " reads " + context.inputCount()
                             + " inputs; the expression uses " + name);

@@ -10,6 +10,7 @@ import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.event.wire.ErrorCode;
 import org.fdnet.event.wire.EventCodec;
+import org.fdnet.event.wire.EventsFrame;
 import org.fdnet.event.wire.Frame;
 import org.fdnet.event.wire.FrameReader;
 import org.fdnet.event.wire.Hello;
@@ -135,21 +136,8 @@ final class ReceiverConnection extends Connection {
                 joinNetworkRun(RunFrame.read(f));
                 continue;
             }
-            if (f.type() != MessageType.EVENTS) {
-                throw new ProtocolException("a core may only send RUN and EVENTS after the handshake, got " + f.type());
-            }
-            long firstSeq = f.getLong();
-            int count = f.getCount(EventCodec.MIN_EVENT_BYTES);
-            int events = f.position();
-            for (int i = 0; i < count; i++) {
-                EventCodec.skip(f); // the whole frame is checked before any of it is taken
-            }
-            f.expectEnd();
-            if (firstSeq < 1) {
-                throw new ProtocolException("EVENTS with sequence number " + firstSeq + " (they start at 1)");
-            }
-            f.rewind(events);
-            take(f, firstSeq, count);
+            EventsFrame events = EventsFrame.check(f); // the whole frame is checked before any of it is taken
+            take(f, events.firstSeq(), events.count());
         }
     }
 

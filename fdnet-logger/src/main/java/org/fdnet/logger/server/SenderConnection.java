@@ -16,6 +16,7 @@ import org.fdnet.event.wire.LoggedRun;
 import org.fdnet.event.wire.MessageType;
 import org.fdnet.event.wire.Protocol;
 import org.fdnet.event.wire.ProtocolException;
+import org.fdnet.event.wire.ViewerRequest;
 import org.fdnet.logger.cache.CachedEvent;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -28,7 +29,6 @@ import org.slf4j.LoggerFactory;
  */
 final class SenderConnection extends Connection {
     private static final Logger LOG = LoggerFactory.getLogger(SenderConnection.class);
-    private static final int MAX_NODES_PER_REQUEST = 10_000;
 
     private final ViewerService viewers;
     private MonitorStream monitor;
@@ -57,36 +57,15 @@ final class SenderConnection extends Connection {
         Frame f;
         while ((f = in.read()) != null) {
             frames++;
-            switch (f.type()) {
-                case LIST_NODES -> listNodes(f.getInt(), f.getString());
-                case LIST_RUNS -> {
-                    int id = f.getInt();
-                    f.expectEnd();
-                    listRuns(id);
-                }
-                case HISTORY, HISTORY_NUMBERS -> {
-                    int id = f.getInt();
-                    int[] nodes = nodeIds(f);
-                    long from = f.getLong();
-                    long to = f.getLong();
-                    f.expectEnd();
-                    if (f.type() == MessageType.HISTORY) {
-                        history(id, nodes, from, to);
-                    } else {
-                        historyNumbers(id, nodes, from, to);
-                    }
-                }
-                case MONITOR -> {
-                    int[] nodes = nodeIds(f);
-                    f.expectEnd();
-                    monitor().monitor(nodes);
-                }
-                case UNMONITOR -> {
-                    int[] nodes = nodeIds(f);
-                    f.expectEnd();
-                    monitor().unmonitor(nodes);
-                }
-                default -> throw new ProtocolException("a viewer may not send " + f.type());
+            ViewerRequest r = ViewerRequest.read(f);
+            switch (r.type()) {
+                case LIST_NODES -> listNodes(r.id(), r.filter());
+                case LIST_RUNS -> listRuns(r.id());
+                case HISTORY -> history(r.id(), r.nodes(), r.from(), r.to());
+                case HISTORY_NUMBERS -> historyNumbers(r.id(), r.nodes(), r.from(), r.to());
+                case MONITOR -> monitor().monitor(r.nodes());
+                case UNMONITOR -> monitor().unmonitor(r.nodes());
+                default -> throw new IllegalStateException("ViewerRequest.read let " + r.type() + " through");
             }
         }
     }
@@ -96,21 +75,6 @@ final class SenderConnection extends Connection {
             monitor = new MonitorStream(this, viewers.cache());
         }
         return monitor;
-    }
-
-    private static int[] nodeIds(Frame f) throws ProtocolException {
-        int n = f.getCount(4);
-        if (n > MAX_NODES_PER_REQUEST) {
-            throw new ProtocolException("request names " + n + " nodes; at most " + MAX_NODES_PER_REQUEST);
-        }
-        int[] ids = new int[n];
-        for (int i = 0; i < n; i++) {
-            ids[i] = f.getInt();
-            if (ids[i] < 0) {
-                throw new ProtocolException("negative node id " + ids[i]);
-            }
-        }
-        return ids;
     }
 
     /** The streams and their network runs, from the database; none (and a warning) while it is unavailable. */

@@ -16,14 +16,18 @@ package org.fdnet.roq.sim;
 public record FragileCell(double x, double y, double sizeX, double sizeY, double height, double strength) {
     /** How long the load must stay above the strength before the cell breaks, s. */
     public static final double BREAK_HOLD_SECONDS = 0.1;
+    /** The tallest fragile block, m: the robot's legs clear 0.3 m of rubble at most. */
+    public static final double MAX_HEIGHT = 0.3;
 
     /** Checks the figures; the message names the bad one. */
     public FragileCell {
         if (!(sizeX > 0) || !(sizeY > 0)) {
             throw new IllegalArgumentException("fragile cell size must be > 0, was " + sizeX + " x " + sizeY);
         }
-        if (!(height > 0)) {
-            throw new IllegalArgumentException("fragile cell height must be > 0, was " + height);
+        if (!(height > 0 && height <= MAX_HEIGHT)) {
+            // a taller block made the heightfield's range overflow to infinity (a fuzz finding)
+            throw new IllegalArgumentException("fragile cell height must be above 0 and at most " + MAX_HEIGHT
+                    + " m, was " + height);
         }
         if (!(strength > 0)) {
             throw new IllegalArgumentException("fragile cell strength must be > 0 N, was " + strength);

@@ -71,14 +71,14 @@ public final class BenchRoqCommand implements Callable<Integer> {
     @Option(names = "--course", defaultValue = "crossing", description = "course (default crossing, the demo's)")
     String course;
 
-    @Option(names = "--network", defaultValue = "networks/roq-rubble.fdn", description = "(a) network (default networks/roq-rubble.fdn, the demo's)")
+    @Option(names = "--network", defaultValue = "networks/roq-rubble.fdn", description = "(a, heading) network (default networks/roq-rubble.fdn, the demo's)")
     Path network;
 
     @Option(names = "--reflex-network", defaultValue = "networks/roq-reflex-bench.fdn",
-            description = "(b) network with a TiltReflex (default networks/roq-reflex-bench.fdn)")
+            description = "(b, push) network with a TiltReflex (default networks/roq-reflex-bench.fdn)")
     Path reflexNetwork;
 
-    @Option(names = "--reflex-course", defaultValue = "flat", description = "(b) course (default flat)")
+    @Option(names = "--reflex-course", defaultValue = "flat", description = "(b, push) course (default flat)")
     String reflexCourse;
 
     @Override
@@ -89,6 +89,23 @@ public final class BenchRoqCommand implements Callable<Integer> {
         }
         if (!part.matches("a|b|ab|push|heading")) {
             System.err.println("fdnet bench roq: --part must be a, b, ab, push or heading, was " + part);
+            return 2;
+        }
+        for (double o : offsets) {
+            if (!(o >= 0 && o < 0.7)) {
+                System.err.println("fdnet bench roq: --offsets must lie in 0..0.7 s (within the 0.7 s swing), was " + o);
+                return 2;
+            }
+        }
+        for (double d : directions) {
+            if (!Double.isFinite(d)) {
+                System.err.println("fdnet bench roq: --directions must be finite degrees, was " + d);
+                return 2;
+            }
+        }
+        if (headingSeconds < 10) {
+            System.err.println("fdnet bench roq: --heading-seconds must be at least 10 (two crawl cycles), was "
+                    + headingSeconds);
             return 2;
         }
         try {

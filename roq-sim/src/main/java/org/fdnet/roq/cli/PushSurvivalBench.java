@@ -9,6 +9,7 @@ import java.util.concurrent.Future;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.Push;
+import org.fdnet.roq.sim.RoqGeometry;
 
 /**
  * {@code fdnet bench roq --part push}: for each push direction and each phase of a leg lift, the largest push RoQ
@@ -46,8 +47,8 @@ final class PushSurvivalBench {
         PushTrial full = new PushTrial(network, course, noise);
         PushTrial bare = new PushTrial(network, course, noise, UNLOADED);
         ExecutorService pool = Executors.newFixedThreadPool(2);
-        List<Future<Double>> withNetwork = new ArrayList<>();
-        List<Future<Double>> without = new ArrayList<>();
+        List<Future<PushTrial.Limit>> withNetwork = new ArrayList<>();
+        List<Future<PushTrial.Limit>> without = new ArrayList<>();
         try {
             for (double d : directions) {
                 for (double o : offsets) {
@@ -55,20 +56,22 @@ final class PushSurvivalBench {
                     without.add(pool.submit(() -> bare.largestSurvived(d, o, resolution)));
                 }
             }
-            System.out.println("direction  offset into swing  full network  Balance+Reflex unloaded  ratio");
+            System.out.println("direction  offset into swing  full network  Balance+Reflex unloaded  ratio  leg in the air");
             double least = Double.POSITIVE_INFINITY;
             double logSum = 0;
             int k = 0;
             for (double d : directions) {
                 for (double o : offsets) {
-                    double f = withNetwork.get(k).get();
-                    double b = without.get(k).get();
+                    PushTrial.Limit limit = withNetwork.get(k).get();
+                    double f = limit.force();
+                    double b = without.get(k).get().force();
                     k++;
                     double ratio = b > 0 ? f / b : Double.POSITIVE_INFINITY;
                     least = Math.min(least, ratio);
                     logSum += Math.log(ratio);
-                    System.out.printf(Locale.ROOT, "%7.0f°  %15.2f s  %10.0f N%s  %21.0f N%s  %5.2f×%n", d, o, f,
-                            f >= Push.MAX_FORCE ? "+" : " ", b, b >= Push.MAX_FORCE ? "+" : " ", ratio);
+                    System.out.printf(Locale.ROOT, "%7.0f°  %15.2f s  %10.0f N%s  %21.0f N%s  %5.2f×  %s%n", d, o, f,
+                            f >= Push.MAX_FORCE ? "+" : " ", b, b >= Push.MAX_FORCE ? "+" : " ", ratio,
+                            RoqGeometry.LEG_NAMES[limit.leg()]);
                 }
             }
             double mean = Math.exp(logSum / k);

@@ -97,15 +97,17 @@ final class PushTrial {
      * not. Assumes survival falls with force (what bisection can find). Returns {@link Push#MAX_FORCE} when even that
      * is survived.
      */
-    double largestSurvived(double direction, double offset, double resolution) throws Exception {
+    Limit largestSurvived(double direction, double offset, double resolution) throws Exception {
         double lo = 0;
         double hi = 100;
-        while (run(hi, direction, offset).survived()) {
+        Outcome last = run(hi, direction, offset);
+        while (last.survived()) {
             lo = hi;
             if (hi >= Push.MAX_FORCE) {
-                return Push.MAX_FORCE;
+                return new Limit(Push.MAX_FORCE, last.leg());
             }
             hi = Math.min(Push.MAX_FORCE, hi * 2);
+            last = run(hi, direction, offset);
         }
         while (hi - lo > resolution) {
             double mid = (lo + hi) / 2;
@@ -115,6 +117,15 @@ final class PushTrial {
                 hi = mid;
             }
         }
-        return lo;
+        return new Limit(lo, last.leg());
+    }
+
+    /**
+     * A bisection's answer.
+     *
+     * @param force the largest push survived, N
+     * @param leg   the leg in the air when the pushes began (0..3: front left, front right, hind left, hind right)
+     */
+    record Limit(double force, int leg) {
     }
 }

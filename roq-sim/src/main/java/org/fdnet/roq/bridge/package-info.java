@@ -7,5 +7,9 @@
  *                              └──────────────────────────────── next cycle ◀─────────────────────────────┘
  *   real time: 1 kHz loop thread ─▶ snapshot (seqlock) ◀─poll─ roq-bridge thread ─▶ network (wall clock) ─▶ command slot
  * </pre>
+ *
+ * <p>{@link org.fdnet.roq.bridge.CourseRun} measures one stepped run by ground truth (distance, drift off the course
+ * line and heading, tilt, fall, broken cells) for the suites and {@code bench roq --part heading}; no controller
+ * reads it.
  */
 package org.fdnet.roq.bridge;

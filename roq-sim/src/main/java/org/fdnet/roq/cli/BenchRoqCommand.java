@@ -1,6 +1,7 @@
 package org.fdnet.roq.cli;
 
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -31,78 +32,114 @@ import picocli.CommandLine.Option;
  *   for the tilt reflex and for the periodic path, the network recording with a logger, beside a bare Java echo of
  *   each snapshot's tick into the command slot.</li>
  * </ol>
+ * {@code --part push}: {@link PushSurvivalBench}; {@code --part heading}: {@link HeadingDriftBench}.
  */
 @Command(name = "roq", mixinStandardHelpOptions = true,
         description = "(a) stepped speed of a RoQ network + simulator beside the simulator alone; (b) real-time reflex"
                 + " latency from pushes, stimulus snapshot to applied command, tilt reflex and periodic path, beside a"
-                + " bare Java echo (same run).")
+                + " bare Java echo (same run); push: largest survivable push with the full network beside Balance and"
+                + " Reflex unloaded; heading: drift off the course line with and without module Course.")
 public final class BenchRoqCommand implements Callable<Integer> {
     @Option(names = "--seconds", defaultValue = "60",
             description = "seconds for each measurement: simulated in (a), wall in (b) (default 60)")
     int seconds;
 
-    @Option(names = "--part", defaultValue = "ab", description = "a, b or ab (default ab)")
+    @Option(names = "--part", defaultValue = "ab",
+            description = "a, b or ab (default ab); push: largest survivable push with and without Balance and Reflex;"
+                    + " heading: drift off the course line with and without module Course")
     String part;
+
+    @Option(names = "--directions", split = ",", defaultValue = "0,45,90,135,180,225,270,315",
+            description = "(push) push directions, degrees from +x (default every 45°)")
+    double[] directions;
+
+    @Option(names = "--offsets", split = ",", defaultValue = "0,0.35",
+            description = "(push) push start, s after a leg lifts (default 0,0.35; the swing lasts 0.7 s)")
+    double[] offsets;
 
     @Option(names = "--no-logger", description = "(b) without recording (default: record with a logger started here)")
     boolean noLogger;
 
+    @Option(names = "--seeds", split = ",", defaultValue = "12,2004,13",
+            description = "(heading) rubble seeds (default 12,2004,13)")
+    long[] seeds;
+
+    @Option(names = "--heading-seconds", defaultValue = "70",
+            description = "(heading) simulated seconds per run (default 70, ~2 m of rubble)")
+    int headingSeconds;
+
     @Option(names = "--course", defaultValue = "crossing", description = "course (default crossing, the demo's)")
     String course;
 
-    @Option(names = "--network", defaultValue = "networks/roq-rubble.fdn", description = "(a) network (default networks/roq-rubble.fdn, the demo's)")
+    @Option(names = "--network", defaultValue = "networks/roq-rubble.fdn", description = "(a, heading) network (default networks/roq-rubble.fdn, the demo's)")
     Path network;
 
     @Option(names = "--reflex-network", defaultValue = "networks/roq-reflex-bench.fdn",
-            description = "(b) network with a TiltReflex (default networks/roq-reflex-bench.fdn)")
+            description = "(b, push) network with a TiltReflex (default networks/roq-reflex-bench.fdn)")
     Path reflexNetwork;
 
-    @Option(names = "--reflex-course", defaultValue = "flat", description = "(b) course (default flat)")
+    @Option(names = "--reflex-course", defaultValue = "flat", description = "(b, push) course (default flat)")
     String reflexCourse;
 
     @Override
     public Integer call() throws Exception {
-        Course c;
-        NetworkInfo definition;
-        try {
-            c = CourseLoader.resolve(course);
-            if (!Files.isRegularFile(network)) {
-                System.err.println("fdnet bench roq: no network file " + network.toAbsolutePath());
-                return 2;
-            }
-            definition = NetworkRepository.load(network);
-        } catch (CourseFormatException | NetworkFileException e) {
-            System.err.println("fdnet bench roq: " + e.getMessage());
-            return 2;
-        }
         if (seconds < 1) {
             System.err.println("fdnet bench roq: --seconds must be at least 1, was " + seconds);
             return 2;
         }
-        if (!part.matches("a|b|ab")) {
-            System.err.println("fdnet bench roq: --part must be a, b or ab, was " + part);
+        if (!part.matches("a|b|ab|push|heading")) {
+            System.err.println("fdnet bench roq: --part must be a, b, ab, push or heading, was " + part);
             return 2;
         }
-        if (part.contains("a")) {
-            stepped(c, definition);
-        }
-        if (part.contains("b")) {
-            Course rc;
-            NetworkInfo reflex;
-            try {
-                rc = CourseLoader.resolve(reflexCourse);
-                if (!Files.isRegularFile(reflexNetwork)) {
-                    System.err.println("fdnet bench roq: no network file " + reflexNetwork.toAbsolutePath());
-                    return 2;
-                }
-                reflex = NetworkRepository.load(reflexNetwork);
-            } catch (CourseFormatException | NetworkFileException e) {
-                System.err.println("fdnet bench roq: " + e.getMessage());
+        for (double o : offsets) {
+            if (!(o >= 0 && o < 0.7)) {
+                System.err.println("fdnet bench roq: --offsets must lie in 0..0.7 s (within the 0.7 s swing), was " + o);
                 return 2;
             }
-            return new ReflexLatencyBench(rc, reflex, reflexNetwork, seconds, !noLogger).run();
         }
-        return 0;
+        for (double d : directions) {
+            if (!Double.isFinite(d)) {
+                System.err.println("fdnet bench roq: --directions must be finite degrees, was " + d);
+                return 2;
+            }
+        }
+        if (headingSeconds < 10) {
+            System.err.println("fdnet bench roq: --heading-seconds must be at least 10 (two crawl cycles), was "
+                    + headingSeconds);
+            return 2;
+        }
+        try {
+            if (part.equals("push")) {
+                new PushSurvivalBench(load(reflexNetwork), CourseLoader.resolve(reflexCourse), 7, directions, offsets, 5)
+                        .run();
+                return 0;
+            }
+            if (part.equals("heading")) {
+                new HeadingDriftBench(load(network), seeds, headingSeconds, 5).run();
+                return 0;
+            }
+            if (part.contains("a")) {
+                stepped(CourseLoader.resolve(course), load(network));
+            }
+            if (part.contains("b")) {
+                return new ReflexLatencyBench(CourseLoader.resolve(reflexCourse), load(reflexNetwork), reflexNetwork,
+                        seconds, !noLogger).run();
+            }
+            return 0;
+        } catch (CourseFormatException | NetworkFileException e) {
+            System.err.println("fdnet bench roq: " + e.getMessage());
+            return 2;
+        } catch (NoSuchFileException e) {
+            System.err.println("fdnet bench roq: no network file " + e.getFile());
+            return 2;
+        }
+    }
+
+    private static NetworkInfo load(Path file) throws NetworkFileException, NoSuchFileException {
+        if (!Files.isRegularFile(file)) {
+            throw new NoSuchFileException(file.toAbsolutePath().toString());
+        }
+        return NetworkRepository.load(file);
     }
 
     private void stepped(Course c, NetworkInfo definition) throws Exception {

@@ -88,8 +88,7 @@ class RoqCoursesTest {
     }
 
     static Course rubble(long seed) throws Exception {
-        return CourseLoader.parse("rubble " + seed, "name = rubble" + seed + "\nterrain = rubble\nlength = 4\nwidth = 2"
-                + "\ncell = 0.05\nrubble.height = 0.06\nrubble.block = 0.25\nseed = " + seed + "\nstart = -1.5 0\n");
+        return CourseRun.rubble(seed);
     }
 
     private static CourseRun run(String label) throws Exception {

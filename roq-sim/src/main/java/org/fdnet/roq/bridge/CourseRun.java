@@ -6,6 +6,8 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.roq.sim.Course;
+import org.fdnet.roq.sim.CourseFormatException;
+import org.fdnet.roq.sim.CourseLoader;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.roq.sim.SimMode;
@@ -13,6 +15,7 @@ import org.fdnet.roq.sim.SimOptions;
 import org.fdnet.runtime.DrivenClock;
 import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.RuntimeOptions;
+import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.runtime.Value;
 
 /**
@@ -20,7 +23,7 @@ import org.fdnet.runtime.Value;
  * every 10 ms: how far RoQ walked along the course, how far it strayed from its course line and heading (each
  * averaged over {@link #WINDOW} samples, one crawl cycle: the body sways ±0.15 m and ±0.1 rad within a cycle by
  * design), its largest tilt, whether it fell, and which fragile cells broke under a probe and which under a loaded
- * foot.
+ * foot. Measurement for tests and benchmarks (ground truth), never for a controller.
  *
  * @param distance              m walked along x
  * @param trackError            largest |y − y at the start| averaged over a cycle, m
@@ -31,29 +34,22 @@ import org.fdnet.runtime.Value;
  * @param probeBroken           cells that broke while a probe pressed (on purpose)
  * @param loadedBreakthroughs   cells that broke while no probe pressed: under a foot that had been accepted and loaded
  */
-record CourseRun(String label, double distance, double trackError, double headingError, double finalHeading,
+public record CourseRun(String label, double distance, double trackError, double headingError, double finalHeading,
                  double tilt, boolean fallen, int probeBroken, int loadedBreakthroughs) {
     /** Samples (10 ms each) over which the track and heading are averaged: 4.5 s, roq-rubble's crawl cycle. */
-    static final int WINDOW = 450;
+    public static final int WINDOW = 450;
 
     /** Runs {@code network} on {@code course} for {@code seconds} of simulated time, noise seed {@code noise}. */
-    static CourseRun of(String label, Path network, Course course, int seconds, long noise, String... unloaded)
+    public static CourseRun of(String label, Path network, Course course, int seconds, long noise, String... unloaded)
             throws Exception {
         return of(label, NetworkRepository.load(network), course, seconds, noise, unloaded);
     }
 
     /** Runs {@code network} (e.g. with changed parameters) on {@code course}. */
-    static CourseRun of(String label, NetworkInfo network, Course course, int seconds, long noise, String... unloaded)
+    public static CourseRun of(String label, NetworkInfo network, Course course, int seconds, long noise, String... unloaded)
             throws Exception {
-        SimOptions options = SimOptions.of(SimMode.STEPPED).withNoise(noise).withRangeSensors(false);
-        try (RoqSimulator sim = RoqSimulator.open(course, options);
-             RuntimeNetwork net = RuntimeNetwork.start(network,
-                     RuntimeOptions.defaults().drivenClock(new DrivenClock(0)))) {
-            for (String module : unloaded) {
-                if (!net.controller().unload(module).executed()) {
-                    throw new IllegalStateException("could not unload " + module);
-                }
-            }
+        try (RoqSimulator sim = RoqSimulator.open(course, steppedWithNoise(noise));
+             RuntimeNetwork net = startStepped(network, unloaded)) {
             SimBridge bridge = SimBridge.stepped(net, sim, 0, 1);
             bridge.run(1);
             SensorSnapshot s = bridge.lastSnapshot();
@@ -99,6 +95,32 @@ record CourseRun(String label, double distance, double trackError, double headin
             return new CourseRun(label, s.groundTruthBodyPosition(0) - x0, track, heading,
                     angle(s.groundTruthYaw() - yaw0), tilt, fallen != null && fallen.asBoolean(), probeBroken, loaded);
         }
+    }
+
+    /** Stepped simulator options with seeded sensor noise, as in the demo, and no range sensors (no Relation reads them). */
+    public static SimOptions steppedWithNoise(long noise) {
+        return SimOptions.of(SimMode.STEPPED).withNoise(noise).withRangeSensors(false);
+    }
+
+    /** Starts {@code network} on a driven clock (for {@link SimBridge#stepped}) with the {@code unloaded} modules unloaded. */
+    public static RuntimeNetwork startStepped(NetworkInfo network, String... unloaded) throws RuntimeStartException {
+        RuntimeNetwork net = RuntimeNetwork.start(network, RuntimeOptions.defaults().drivenClock(new DrivenClock(0)));
+        for (String module : unloaded) {
+            if (!net.controller().unload(module).executed()) {
+                net.close();
+                throw new IllegalStateException("could not unload module " + module + " of " + network.name());
+            }
+        }
+        return net;
+    }
+
+    /**
+     * The 4 m × 2 m rubble course of the suites: 6 cm blocks of 0.25 m, 5 cm cells, RoQ starting 1.5 m before the
+     * middle; {@code seed} places the blocks.
+     */
+    public static Course rubble(long seed) throws CourseFormatException {
+        return CourseLoader.parse("rubble " + seed, "name = rubble" + seed + "\nterrain = rubble\nlength = 4\nwidth = 2"
+                + "\ncell = 0.05\nrubble.height = 0.06\nrubble.block = 0.25\nseed = " + seed + "\nstart = -1.5 0\n");
     }
 
     private static double angle(double a) {

@@ -18,7 +18,7 @@ public final class NamingOptions {
     String bind = OrbSettings.LOOPBACK; // also when made in code, not parsed (the editor's Run)
 
     @Mixin
-    TlsOptions tls;
+    TlsOptions tls = new TlsOptions(); // plain, on loopback, when made in code (the editor's Run)
 
     /**
      * Turns TLS on when asked and refuses to listen off loopback without it (see {@link TlsOptions}).

@@ -7,5 +7,8 @@
  *                              └──────────────────────────────── next cycle ◀─────────────────────────────┘
  *   real time: 1 kHz loop thread ─▶ snapshot (seqlock) ◀─poll─ roq-bridge thread ─▶ network (wall clock) ─▶ command slot
  * </pre>
+ *
+ * <p>{@link org.fdnet.roq.bridge.CourseMeter} measures a run on a course by ground truth (for the demo's summary and
+ * the course suite): track and heading error, cells broken by probes apart from loaded-foot breakthroughs.
  */
 package org.fdnet.roq.bridge;

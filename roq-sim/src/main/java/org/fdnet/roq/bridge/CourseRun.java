@@ -21,9 +21,9 @@ import org.fdnet.runtime.Value;
 /**
  * One stepped run of a RoQ network on a course with seeded sensor noise (as in the demo), measured by ground truth
  * every 10 ms: how far RoQ walked along the course, how far it strayed from its course line and heading (each
- * averaged over {@link #WINDOW} samples, one crawl cycle: the body sways ±0.15 m and ±0.1 rad within a cycle by
- * design), its largest tilt, whether it fell, and which fragile cells broke under a probe and which under a loaded
- * foot. Measurement for tests and benchmarks (ground truth), never for a controller.
+ * averaged over {@link CourseMeter#WINDOW} samples, one crawl cycle: the body sways ±0.15 m and ±0.1 rad within a
+ * cycle by design), its largest tilt, whether it fell, and which fragile cells broke under a probe and which under a loaded
+ * foot ({@link CourseMeter} measures these).
  *
  * @param distance              m walked along x
  * @param trackError            largest |y − y at the start| averaged over a cycle, m
@@ -36,9 +36,6 @@ import org.fdnet.runtime.Value;
  */
 public record CourseRun(String label, double distance, double trackError, double headingError, double finalHeading,
                  double tilt, boolean fallen, int probeBroken, int loadedBreakthroughs) {
-    /** Samples (10 ms each) over which the track and heading are averaged: 4.5 s, roq-rubble's crawl cycle. */
-    public static final int WINDOW = 450;
-
     /** Runs {@code network} on {@code course} for {@code seconds} of simulated time, noise seed {@code noise}. */
     public static CourseRun of(String label, Path network, Course course, int seconds, long noise, String... unloaded)
             throws Exception {
@@ -54,46 +51,19 @@ public record CourseRun(String label, double distance, double trackError, double
             bridge.run(1);
             SensorSnapshot s = bridge.lastSnapshot();
             double x0 = s.groundTruthBodyPosition(0);
-            double y0 = s.groundTruthBodyPosition(1);
             double yaw0 = s.groundTruthYaw();
-            double track = 0;
-            double[] lastY = new double[WINDOW];
-            double[] lastYaw = new double[WINDOW];
-            double sumY = 0;
-            double sumYaw = 0;
-            double heading = 0;
+            CourseMeter meter = new CourseMeter(s);
             double tilt = 0;
-            int broken = 0;
-            int probeBroken = 0;
-            int loaded = 0;
             for (int t = 0; t < seconds * 100; t++) {
                 bridge.run(10);
                 s = bridge.lastSnapshot();
-                int slot = t % WINDOW;
-                sumY += s.groundTruthBodyPosition(1) - y0 - lastY[slot];
-                lastY[slot] = s.groundTruthBodyPosition(1) - y0;
-                double yaw = angle(s.groundTruthYaw() - yaw0);
-                sumYaw += yaw - lastYaw[slot];
-                lastYaw[slot] = yaw;
-                if (t >= WINDOW - 1) {
-                    track = Math.max(track, Math.abs(sumY / WINDOW));
-                    heading = Math.max(heading, Math.abs(sumYaw / WINDOW));
-                }
+                meter.sample(s, net);
                 tilt = Math.max(tilt, Math.max(Math.abs(s.roll()), Math.abs(s.pitch())));
-                int nowBroken = s.brokenCellCount();
-                if (nowBroken > broken) {
-                    Value phase = value(net, "gait phase", "main");
-                    if (phase != null && phase.length() == 3 && phase.element(2) > 0) {
-                        probeBroken += nowBroken - broken;
-                    } else {
-                        loaded += nowBroken - broken;
-                    }
-                    broken = nowBroken;
-                }
             }
             Value fallen = value(net, "fallen", "main");
-            return new CourseRun(label, s.groundTruthBodyPosition(0) - x0, track, heading,
-                    angle(s.groundTruthYaw() - yaw0), tilt, fallen != null && fallen.asBoolean(), probeBroken, loaded);
+            return new CourseRun(label, s.groundTruthBodyPosition(0) - x0, meter.maxTrackError(),
+                    meter.maxHeadingError(), CourseMeter.angle(s.groundTruthYaw() - yaw0), tilt,
+                    fallen != null && fallen.asBoolean(), meter.probeBroken(), meter.loadedBreakthroughs());
         }
     }
 
@@ -121,10 +91,6 @@ public record CourseRun(String label, double distance, double trackError, double
     public static Course rubble(long seed) throws CourseFormatException {
         return CourseLoader.parse("rubble " + seed, "name = rubble" + seed + "\nterrain = rubble\nlength = 4\nwidth = 2"
                 + "\ncell = 0.05\nrubble.height = 0.06\nrubble.block = 0.25\nseed = " + seed + "\nstart = -1.5 0\n");
-    }
-
-    private static double angle(double a) {
-        return Math.atan2(Math.sin(a), Math.cos(a));
     }
 
     static Value value(RuntimeNetwork net, String node, String module) {

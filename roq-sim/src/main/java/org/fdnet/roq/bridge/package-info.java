@@ -8,8 +8,9 @@
  *   real time: 1 kHz loop thread ─▶ snapshot (seqlock) ◀─poll─ roq-bridge thread ─▶ network (wall clock) ─▶ command slot
  * </pre>
  *
- * <p>{@link org.fdnet.roq.bridge.CourseRun} measures one stepped run by ground truth (distance, drift off the course
- * line and heading, tilt, fall, broken cells) for the suites and {@code bench roq --part heading}; no controller
- * reads it.
+ * <p>{@link org.fdnet.roq.bridge.CourseMeter} measures a run on a course by ground truth (for the demo's summary, the
+ * course suite and {@code bench roq --part heading}): track and heading error, cells broken by probes apart from
+ * loaded-foot breakthroughs. {@link org.fdnet.roq.bridge.CourseRun} is one stepped run measured by it (distance, tilt
+ * and fall too). No controller reads either.
  */
 package org.fdnet.roq.bridge;

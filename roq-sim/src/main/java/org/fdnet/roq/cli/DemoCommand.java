@@ -12,6 +12,7 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.xml.NetworkFileException;
 import org.fdnet.netinfo.xml.NetworkRepository;
+import org.fdnet.roq.bridge.CourseMeter;
 import org.fdnet.roq.bridge.SimBridge;
 import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.CourseFormatException;
@@ -52,6 +53,10 @@ import org.fdnet.run.NetworkRun;
 public final class DemoCommand implements Callable<Integer> {
     /** The window and the figures are refreshed this often; the progress line is printed each second. */
     private static final long FRAME_MILLIS = 100;
+    /** The course is measured this often ({@link CourseMeter}: a break is told a probe's by the phase at that moment). */
+    private static final long SAMPLE_MILLIS = 10;
+    /** HoldCourse's own estimate of where RoQ is, shown beside the ground truth's figures when the network has it. */
+    private static final NodeRef TRACK = new NodeRef("Course", "track");
 
     @Option(names = "--for", defaultValue = "100", paramLabel = "DURATION", converter = DurationText.class,
             description = "how long to run: 30s, 2m, or plain seconds (default 100: long enough to cross the"
@@ -171,6 +176,8 @@ public final class DemoCommand implements Callable<Integer> {
         double startY;
         boolean fallen = false;
         DemoFigures figures = DemoFigures.none();
+        CourseMeter onCourse = null;
+        String sensedTrack = null;
         RoqDemoWindow window = null;
         try (RoqSimulator sim = RoqSimulator.open(c, simOptions);
              RuntimeNetwork net = RuntimeNetwork.start(definition, RuntimeOptions.defaults().sink(meter));
@@ -188,15 +195,21 @@ public final class DemoCommand implements Callable<Integer> {
             if (gui) {
                 window = RoqDemoWindow.open("FDNet demo: " + definition.name() + " on " + c.name(), sim.heightfield());
             }
-            long frames = runFor.toMillis() / FRAME_MILLIS;
+            onCourse = new CourseMeter(s);
+            long samples = runFor.toMillis() / SAMPLE_MILLIS;
             long t0 = System.nanoTime();
-            for (long frame = 1; frame <= frames; frame++) {
-                long due = t0 + frame * FRAME_MILLIS * 1_000_000L;
+            for (long sample = 1; sample <= samples; sample++) {
+                long due = t0 + sample * SAMPLE_MILLIS * 1_000_000L;
                 long wait = due - System.nanoTime();
                 if (wait > 0) {
                     Thread.sleep(wait / 1_000_000L, (int) (wait % 1_000_000L));
                 }
                 sim.read(s);
+                onCourse.sample(s, net);
+                if (sample % (FRAME_MILLIS / SAMPLE_MILLIS) != 0) {
+                    continue;
+                }
+                long frame = sample / (FRAME_MILLIS / SAMPLE_MILLIS);
                 sim.statistics(stats);
                 fallen = isFallen(net);
                 figures = meter.figures(net, s, startX, stats, fallen);
@@ -215,6 +228,7 @@ public final class DemoCommand implements Callable<Integer> {
             sim.read(s);
             sim.statistics(stats);
             figures = meter.figures(net, s, startX, stats, fallen);
+            sensedTrack = sensedTrack(net);
             if (screenshot != null) {
                 writeScreenshot(window, s, figures, sim);
                 System.out.println("screenshot: " + screenshot.toAbsolutePath());
@@ -232,6 +246,10 @@ public final class DemoCommand implements Callable<Integer> {
                 s.groundTruthBodyPosition(0) - startX, s.groundTruthBodyPosition(1) - startY, s.simTime(),
                 fallen ? "FELL" : "no fall", DemoFigures.metres(figures.smallestMargin()), DemoFigures.count(figures.probes()),
                 DemoFigures.count(figures.fragileFound()), DemoFigures.count(figures.fragileAvoided()), s.brokenCellCount());
+        System.out.println("course: " + onCourse.summary());
+        if (sensedTrack != null) {
+            System.out.println("course as the network sensed it (" + TRACK + "): " + sensedTrack);
+        }
         System.out.printf(Locale.ROOT, "loop: %,d ticks, %,d overruns, wake-up p99 %.1f µs (max %.1f µs)%n", stats.ticks(),
                 stats.overruns(), stats.latencyPercentileNanos(99) / 1e3, stats.maxLatencyNanos() / 1e3);
         System.out.printf(Locale.ROOT, "events: %,d logged by the network%n", meter.events());
@@ -287,6 +305,17 @@ public final class DemoCommand implements Callable<Integer> {
         });
         if (failed[0] != null) {
             throw failed[0];
+        }
+    }
+
+    /** HoldCourse's estimate {x, y, heading} from the start, or null when the network has no such Data. */
+    private static String sensedTrack(RuntimeNetwork net) {
+        try {
+            Value v = net.controller().value(TRACK);
+            return v == null || v.length() != 3 ? null : String.format(Locale.ROOT,
+                    "along %.3f m, across %.3f m, heading %.3f rad", v.element(0), v.element(1), v.element(2));
+        } catch (RuntimeException notLoaded) {
+            return null; // no Course module loaded: nothing sensed to show
         }
     }
 

@@ -7,6 +7,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.roq.bridge.CourseMeter;
 import org.fdnet.roq.bridge.CourseRun;
 
 /**
@@ -31,7 +32,7 @@ final class HeadingDriftBench {
     double run() throws Exception {
         System.out.printf(Locale.ROOT, "fdnet bench roq --part heading: %s on 6 cm rubble, %d simulated s per run,"
                         + " noise seed %d, stepped; off the line / heading = largest cycle mean (%.1f s); baseline:"
-                        + " module Course unloaded%n", network.name(), seconds, noise, CourseRun.WINDOW / 100.0);
+                        + " module Course unloaded%n", network.name(), seconds, noise, CourseMeter.WINDOW / 100.0);
         ExecutorService pool = Executors.newFixedThreadPool(2);
         List<Future<CourseRun>> held = new ArrayList<>();
         List<Future<CourseRun>> unheld = new ArrayList<>();

@@ -1,0 +1,142 @@
+package org.fdnet.roq.bridge;
+
+import java.util.Locale;
+import org.fdnet.netinfo.NodeRef;
+import org.fdnet.roq.sim.SensorSnapshot;
+import org.fdnet.runtime.RuntimeNetwork;
+import org.fdnet.runtime.Value;
+
+/**
+ * Measures a run on a course by ground truth (allowed for measuring, never for control), sampled every 10 ms by
+ * the caller: how far RoQ strayed from its course line (the straight line ahead of where it started) and from its
+ * heading, each averaged over {@link #WINDOW} samples, one crawl cycle (the body sways ±0.15 m and ±0.1 rad within
+ * a cycle by design), and which fragile cells broke under a probe and which under a loaded foot.
+ *
+ * <pre>
+ *   snapshot (ground truth y, yaw, broken cells) ─┐
+ *   the network's "gait phase" {leg, swing, probe} ┴─▶ sample() ──▶ track / heading errors, max and at the end
+ *                                                                 └▶ probe-broken cells / loaded-foot breakthroughs
+ * </pre>
+ *
+ * <p>A cell that breaks while the gait phase says a probe presses (its third element above 0) was broken by the
+ * probe, on purpose; any other was broken under a foot that had been accepted and loaded.
+ */
+public final class CourseMeter {
+    /** Samples (10 ms each) over which the track and heading are averaged: 4.5 s, roq-rubble's crawl cycle. */
+    public static final int WINDOW = 450;
+    /** The Data telling the gait's phase {leg, swinging, probing}, in the module {@link #PHASE_MODULE}. */
+    static final String PHASE = "gait phase";
+    static final String PHASE_MODULE = "main";
+
+    private final double y0;
+    private final double yaw0;
+    private final double[] lastY = new double[WINDOW];
+    private final double[] lastYaw = new double[WINDOW];
+    private double sumY;
+    private double sumYaw;
+    private int samples;
+    private double maxTrack;
+    private double maxHeading;
+    private int broken;
+    private int probeBroken;
+    private int loadedBreakthroughs;
+
+    /** Starts measuring from {@code start}: its position across and its heading are the course line's. */
+    public CourseMeter(SensorSnapshot start) {
+        this(start.groundTruthBodyPosition(1), start.groundTruthYaw(), start.brokenCellCount());
+    }
+
+    /** Starts measuring from the course line at {@code y0} heading {@code yaw0}, {@code broken} cells broken so far. */
+    CourseMeter(double y0, double yaw0, int broken) {
+        this.y0 = y0;
+        this.yaw0 = yaw0;
+        this.broken = broken;
+    }
+
+    /** Takes one sample (every 10 ms): {@code s} now and the network whose gait phase tells a probe's press. */
+    public void sample(SensorSnapshot s, RuntimeNetwork network) {
+        boolean newBreak = s.brokenCellCount() > broken;
+        sample(s.groundTruthBodyPosition(1), s.groundTruthYaw(), s.brokenCellCount(), newBreak && probing(network));
+    }
+
+    /**
+     * One sample: the body at {@code y} heading {@code yaw} (ground truth), {@code brokenCells} broken so far, and
+     * whether a probe presses now.
+     */
+    void sample(double y, double yaw, int brokenCells, boolean probing) {
+        int slot = samples % WINDOW;
+        double across = y - y0;
+        sumY += across - lastY[slot];
+        lastY[slot] = across;
+        double turned = angle(yaw - yaw0);
+        sumYaw += turned - lastYaw[slot];
+        lastYaw[slot] = turned;
+        samples++;
+        if (samples >= WINDOW) {
+            maxTrack = Math.max(maxTrack, Math.abs(endTrack()));
+            maxHeading = Math.max(maxHeading, Math.abs(endHeading()));
+        }
+        if (brokenCells > broken) {
+            if (probing) {
+                probeBroken += brokenCells - broken;
+            } else {
+                loadedBreakthroughs += brokenCells - broken;
+            }
+            broken = brokenCells;
+        }
+    }
+
+    /** Whether {@code network}'s gait phase says a probe presses now (false without such a Data). */
+    static boolean probing(RuntimeNetwork network) {
+        Value phase;
+        try {
+            phase = network.controller().value(NodeRef.parse(PHASE, PHASE_MODULE));
+        } catch (RuntimeException notLoaded) {
+            return false; // no gait phase (unloaded, or another network): no press is known, the break counts as loaded
+        }
+        return phase != null && phase.length() == 3 && phase.element(2) > 0;
+    }
+
+    /** The largest |y − y at the start| averaged over a cycle, m (0 before the first whole cycle). */
+    public double maxTrackError() {
+        return maxTrack;
+    }
+
+    /** The largest |yaw − yaw at the start| averaged over a cycle, rad (0 before the first whole cycle). */
+    public double maxHeadingError() {
+        return maxHeading;
+    }
+
+    /** y − y at the start averaged over the last cycle (or the samples so far), m; signed (left positive). */
+    public double endTrack() {
+        return samples == 0 ? 0 : sumY / Math.min(samples, WINDOW);
+    }
+
+    /** yaw − yaw at the start averaged over the last cycle (or the samples so far), rad; signed. */
+    public double endHeading() {
+        return samples == 0 ? 0 : sumYaw / Math.min(samples, WINDOW);
+    }
+
+    /** Cells broken while a probe pressed on them, on purpose. */
+    public int probeBroken() {
+        return probeBroken;
+    }
+
+    /** Cells broken while no probe pressed: under a foot that had been accepted and loaded. */
+    public int loadedBreakthroughs() {
+        return loadedBreakthroughs;
+    }
+
+    /** The one summary line of these figures. */
+    public String summary() {
+        return String.format(Locale.ROOT, "cells broken by probes %d, loaded-foot breakthroughs %d; off the course"
+                        + " line max %.3f m, at the end %.3f m; heading error max %.3f rad, at the end %.3f rad"
+                        + " (ground truth, each averaged over a %.1f s crawl cycle)", probeBroken, loadedBreakthroughs,
+                maxTrack, endTrack(), maxHeading, endHeading(), WINDOW / 100.0);
+    }
+
+    /** {@code a} wrapped to (−π, π]. */
+    public static double angle(double a) {
+        return Math.atan2(Math.sin(a), Math.cos(a));
+    }
+}

@@ -18,7 +18,7 @@ public final class LocalNetworks {
         return forHost(hostName, allowedPaths, RuntimeOptions.defaults());
     }
 
-    /** As above, with {@code options}' worker threads and event sinks (a run's own host: --workers, --trace). */
+    /** As above, with {@code options}' worker threads and sinks (fdnet host --workers; a run's own host: --trace). */
     public static RuntimeLocalNetwork forHost(String hostName, List<Path> allowedPaths, RuntimeOptions options) {
         ClassLoadingPolicy policy = new ClassLoadingPolicy(allowedPaths, ClassPolicy.BUILT_IN_PACKAGES,
                 Path.of("").toAbsolutePath());

@@ -123,7 +123,7 @@ public final class NetworkRun {
         EventCounter counter = new EventCounter();
         RuntimeOptions engine = RuntimeOptions.defaults().sink(counter);
         if (options.workers != null) {
-            engine.workerThreads(options.workers);
+            engine.workerThreads(options.workers); // one host only: refused above for a distributed run
         }
         TracePrinter trace = options.trace ? new TracePrinter(out, System.currentTimeMillis() * 1000) : null;
         if (trace != null) {
@@ -208,6 +208,11 @@ public final class NetworkRun {
         if (options.simCourse != null) {
             return "--sim runs the network on this machine only; it does not combine with a distributed run";
         }
+        if (options.workers != null) {
+            return "--workers " + options.workers + ": sizes one engine, and a distributed run spans engines that"
+                    + " started before it (every fdnet host's serves each network deployed there); size each where"
+                    + " it starts: fdnet host --name HOST --workers N";
+        }
         String placed = options.control.placement();
         if (placed != null) {
             return placed + ": a distributed run registers its control object in its naming service, not at a port"
@@ -273,6 +278,11 @@ public final class NetworkRun {
         String network = publishedName(definition, file);
         if (options.logger != null) {
             out.printf("every host records its part of the run with the logger at %s%n", options.logger);
+        }
+        if (options.trace) {
+            out.printf("--trace: this process's host %s (its nodes, its stand-ins of other hosts' Datas as values"
+                    + " arrive) and every host and link event; the other hosts' own events stay there (record them"
+                    + " with --logger, see them in fdnet viewer)%n", options.distribution.localHostName());
         }
         try {
             DistributedRun run = DistributedRun.start(new DistributedRun.Request(file, definition,

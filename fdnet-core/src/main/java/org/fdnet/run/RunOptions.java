@@ -39,12 +39,13 @@ public final class RunOptions {
     String simCourse;
 
     @Option(names = "--workers", paramLabel = "N",
-            description = "worker threads of this process's engine (default: one per core); in a distributed run,"
-                    + " of this process's host (each fdnet host has its own)")
+            description = "worker threads of the network's engine (default: one per core); refused in a distributed"
+                    + " run: each fdnet host's engine is sized where it starts (fdnet host --workers N)")
     Integer workers;
 
     @Option(names = "--trace", description = "print every event of this process's engine as it happens (in a"
-            + " distributed run: of this process's host, and every host and link event)")
+            + " distributed run it says so: this process's host only, with its stand-ins of the others' Datas,"
+            + " and every host and link event; record the other hosts with --logger)")
     boolean trace;
 
     @Option(names = "--logger", paramLabel = "HOST:PORT",

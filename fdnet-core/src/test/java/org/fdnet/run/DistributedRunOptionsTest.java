@@ -58,6 +58,7 @@ class DistributedRunOptionsTest {
 
     private static final List<FdnetChildProcess> processes = new ArrayList<>();
     private static String naming;
+    private static FdnetChildProcess flyer;
     private static Path file;
 
     @BeforeAll
@@ -67,8 +68,9 @@ class DistributedRunOptionsTest {
         processes.add(FdnetChildProcess.start("naming", List.of("naming", "--port", Integer.toString(port)),
                 "fdnet naming ready", 60_000));
         naming = OrbSettings.namingCorbaloc(OrbSettings.LOOPBACK, port);
-        processes.add(FdnetChildProcess.start("host flyer", List.of("host", "--name", "flyer", "--naming", naming),
-                "fdnet host flyer ready", 60_000));
+        flyer = FdnetChildProcess.start("host flyer", List.of("host", "--name", "flyer", "--naming", naming,
+                "--workers", "2"), "fdnet host flyer ready", 60_000);
+        processes.add(flyer);
     }
 
     @AfterAll
@@ -106,19 +108,26 @@ class DistributedRunOptionsTest {
     }
 
     @Test
-    void shouldTraceTheEventsOfThisProcessesHost() throws Exception {
+    void shouldTraceThisProcessesHostAndSaySoForTheOtherHosts() throws Exception {
         Finished run = runFor("--trace");
         assertThat(run.exit).as(run.output).isZero();
+        // what --trace can show here, said before it shows it: the flyer's own events stay on the flyer
+        assertThat(run.output).containsPattern("--trace: this process's host \\S+ \\(its nodes")
+                .contains("the other hosts' own events stay there (record them with --logger");
         // this process's share: the Operator and its stand-ins of the flyer's Datas, as they are made and run
         assertThat(run.output).containsPattern("trace +[\\d.]+ named +#\\d+ Data main/Level")
                 .containsPattern("trace +[\\d.]+ relation main/Operator RUNNING");
     }
 
     @Test
-    void shouldRunThisProcessesHostWithTheWorkersAsked() throws Exception {
+    void shouldRefuseWorkersByNameAndSizeEachHostWhereItStarts() throws Exception {
         Finished run = runFor("--workers", "3");
-        assertThat(run.exit).as(run.output).isZero();
-        assertThat(run.output).contains("this process's host runs 3 worker threads");
+        assertThat(run.exit).as(run.output).isEqualTo(2);
+        assertThat(run.output).contains("--workers 3: sizes one engine")
+                .contains("fdnet host --name HOST --workers N");
+        // the flyer was started with --workers 2 and says so; the other tests' runs deploy onto it
+        assertThat(flyer.output()).anyMatch(line -> line.contains("fdnet host flyer ready")
+                && line.contains("2 worker threads"));
     }
 
     @Test

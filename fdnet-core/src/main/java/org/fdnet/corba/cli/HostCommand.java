@@ -11,6 +11,7 @@ import org.fdnet.corba.LinkFaults;
 import org.fdnet.corba.LinkSettings;
 import org.fdnet.corba.LocalNetworks;
 import org.fdnet.corba.RuntimeLocalNetwork;
+import org.fdnet.runtime.RuntimeOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -29,6 +30,11 @@ public final class HostCommand implements Callable<Integer> {
 
     @Option(names = "--allow-path", description = "a folder whose node classes remote creates may load (repeatable)")
     List<Path> allowedPaths = new ArrayList<>();
+
+    @Option(names = "--workers", paramLabel = "N",
+            description = "worker threads of this host's engine (default: one per core); it serves every network"
+                    + " deployed here, so fdnet run --workers cannot size it")
+    Integer workers;
 
     @Option(names = "--logger", paramLabel = "HOST:PORT",
             description = "record this host's events with the network state logger at HOST:PORT (see fdnet logger);"
@@ -49,7 +55,17 @@ public final class HostCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         HostProcess host;
-        RuntimeLocalNetwork engine = LocalNetworks.forHost(name, allowedPaths);
+        RuntimeOptions options = RuntimeOptions.defaults();
+        try {
+            if (workers != null) {
+                options.workerThreads(workers);
+            }
+        } catch (IllegalArgumentException e) {
+            spec.commandLine().getErr().println("fdnet host " + name + ": --workers " + workers + ": "
+                    + e.getMessage());
+            return 2;
+        }
+        RuntimeLocalNetwork engine = LocalNetworks.forHost(name, allowedPaths, options);
         try {
             naming.secure("this host");
             if (linkFaults != null) {
@@ -72,7 +88,8 @@ public final class HostCommand implements Callable<Integer> {
             return 1;
         }
         Runtime.getRuntime().addShutdownHook(new Thread(host::close, "fdnet-host-shutdown"));
-        System.out.println("fdnet host " + name + " ready (naming " + naming.corbaloc() + ")");
+        System.out.println("fdnet host " + name + " ready (naming " + naming.corbaloc() + ", "
+                + engine.runtime().workerThreads() + " worker threads)");
         System.out.flush();
         NamingCommand.awaitStop();
         return 0;

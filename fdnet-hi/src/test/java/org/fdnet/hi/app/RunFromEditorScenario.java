@@ -78,7 +78,7 @@ public final class RunFromEditorScenario {
 
     /** Run from the dialog (distributed through {@code naming} when given), check it runs, Stop, check it stopped. */
     private void runAndStop(String network, String naming) throws Exception {
-        JMenuItem run = menuItem("live.run");
+        JMenuItem run = menuItem(window, "live.run");
         SwingUtilities.invokeLater(run::doClick);
         waitFor("the Run dialog", () -> dialog() != null);
         LiveTestNetwork.edt(() -> {
@@ -95,17 +95,18 @@ public final class RunFromEditorScenario {
                 .node(new NodeRef("main", "Source")) != null);
         ShowingComponents.check(LiveTestNetwork.edt(() -> window.status().message().startsWith("Running " + network)),
                 "the status says it runs");
-        ShowingComponents.check(LiveTestNetwork.edt(() -> !menuItem("live.run").isEnabled()
-                && menuItem("live.stop").isEnabled()), "Run is off and Stop on while it runs");
+        ShowingComponents.check(LiveTestNetwork.edt(() -> !menuItem(window, "live.run").isEnabled()
+                && menuItem(window, "live.stop").isEnabled()), "Run is off and Stop on while it runs");
         LiveTestNetwork.edt(() -> {
-            menuItem("live.stop").doClick();
+            menuItem(window, "live.stop").doClick();
             return null;
         });
         waitFor(network + " stopped and the editor offline", () -> window.live() == null
-                && menuItem("live.run").isEnabled() && !menuItem("live.stop").isEnabled());
+                && menuItem(window, "live.run").isEnabled() && !menuItem(window, "live.stop").isEnabled());
     }
 
-    private JMenuItem menuItem(String name) {
+    /** The editor's menu item named {@code name} (Swing thread). */
+    static JMenuItem menuItem(HiWindow window, String name) {
         for (int i = 0; i < window.getJMenuBar().getMenuCount(); i++) {
             JMenu menu = window.getJMenuBar().getMenu(i);
             for (int j = 0; j < menu.getItemCount(); j++) {
@@ -118,7 +119,8 @@ public final class RunFromEditorScenario {
         throw new AssertionError("no menu item " + name);
     }
 
-    private static JDialog dialog() {
+    /** The showing dialog, or {@code null}. */
+    static JDialog dialog() {
         return (JDialog) Arrays.stream(Window.getWindows()).filter(w -> w instanceof JDialog d && d.isShowing())
                 .findFirst().orElse(null);
     }

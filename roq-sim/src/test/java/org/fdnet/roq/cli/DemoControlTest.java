@@ -57,6 +57,8 @@ class DemoControlTest {
             assertThat(roq.snapshot().node(KEEP_BALANCE).parameter("margin")).isEqualTo("0.08");
 
             assertThat(roq.unload("Balance").executed()).isTrue();
+            // A sample taken before the unload may still be on its way: start counting at the first one without it.
+            assertThat(firstSampleWithout(samples, BALANCE_SHIFT, 10_000)).as("a sample after the unload").isTrue();
             samples.clear();
             assertThat(sampled(samples, BALANCE_SHIFT, 1_000)).as("no Balance values while it is unloaded").isFalse();
             assertThat(roq.load("Balance").executed()).isTrue();
@@ -80,6 +82,18 @@ class DemoControlTest {
                 Thread.sleep(200);
             }
         }
+    }
+
+    private static boolean firstSampleWithout(BlockingQueue<Map<NodeRef, Value>> samples, NodeRef data, long millis)
+            throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(millis);
+        while (System.nanoTime() < deadline) {
+            Map<NodeRef, Value> s = samples.poll(100, TimeUnit.MILLISECONDS);
+            if (s != null && !s.containsKey(data)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static boolean sampled(BlockingQueue<Map<NodeRef, Value>> samples, NodeRef data, long millis)

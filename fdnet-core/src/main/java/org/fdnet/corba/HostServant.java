@@ -354,6 +354,29 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         }
     }
 
+    /**
+     * A peer's {@code deliver} is read by {@link CheckedValueReader}, not by the generated helper, so that hostile
+     * bytes are refused before anything they claim is allocated; every other operation is dispatched as generated.
+     */
+    @Override
+    public org.omg.CORBA.portable.OutputStream _invoke(String method, org.omg.CORBA.portable.InputStream input,
+            org.omg.CORBA.portable.ResponseHandler handler) {
+        if (!"deliver".equals(method)) {
+            return super._invoke(method, input, handler);
+        }
+        ValueBatch batch = CheckedValueReader.batch(input);
+        try {
+            long next = deliver(batch);
+            org.omg.CORBA.portable.OutputStream out = handler.createReply();
+            out.write_longlong(next);
+            return out;
+        } catch (UnknownLink unknown) {
+            org.omg.CORBA.portable.OutputStream out = handler.createExceptionReply();
+            org.fdnet.corba.idl.UnknownLinkHelper.write(out, unknown);
+            return out;
+        }
+    }
+
     @Override
     public long deliver(ValueBatch batch) throws UnknownLink {
         InboundLink in = inbound.get(batch.link);

@@ -10,6 +10,7 @@ import java.util.function.BooleanSupplier;
 import java.util.stream.LongStream;
 import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.Host;
+import org.fdnet.corba.idl.HostHelper;
 import org.fdnet.corba.idl.NodeSpec;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.Parameter;
@@ -117,6 +118,22 @@ class CrossHostLinkTest {
                 new NodeInfo(org.fdnet.netinfo.NodeKind.RELATION, "evil", "crawler", "", "java.lang.Thread", List.of()))))
                 .isInstanceOf(Refused.class)
                 .satisfies(e -> assertThat(((Refused) e).reason).contains("is not built in"));
+    }
+
+    @Test
+    void shouldRefuseABatchClaimingMoreValuesThanItHoldsAndKeepServing() {
+        // The request comes through another ORB, over IIOP: the host reads it as a peer's request.
+        org.omg.CORBA.portable.ObjectImpl peer = (org.omg.CORBA.portable.ObjectImpl) base.orb().orb()
+                .string_to_object(observer.orb().orb().object_to_string(observer.reference()));
+        org.omg.CORBA.portable.OutputStream hostile = peer._request("deliver", true);
+        hostile.write_longlong(2);
+        hostile.write_longlong(0);
+        hostile.write_string("base/1/1");
+        hostile.write_longlong(0);
+        hostile.write_long(Integer.MAX_VALUE); // the values' count, as the request's last bytes: nothing follows
+
+        assertThatThrownBy(() -> peer._invoke(hostile)).isInstanceOf(org.omg.CORBA.MARSHAL.class);
+        assertThat(HostHelper.narrow(peer).name()).isEqualTo("observer");
     }
 
     /**

@@ -16,6 +16,7 @@ import java.util.function.Supplier;
 import org.fdnet.control.LiveNetwork;
 import org.fdnet.control.LiveNetworkListener;
 import org.fdnet.control.NetworkUnreachableException;
+import org.fdnet.corba.CheckedValueReader;
 import org.fdnet.corba.IdlMapping;
 import org.fdnet.corba.OrbRuntime;
 import org.fdnet.corba.OrbSettings;
@@ -411,6 +412,19 @@ public final class RemoteLiveNetwork implements LiveNetwork {
                         : ChangeOutcome.failed(outcome.description, outcome.reason);
                 guarded(() -> listener.changeSettled(o), "changeSettled");
             }
+        }
+
+        /** {@code valuesSampled} is read by {@link CheckedValueReader}: hostile bytes are refused before any allocation. */
+        @Override
+        public org.omg.CORBA.portable.OutputStream _invoke(String method, org.omg.CORBA.portable.InputStream input,
+                org.omg.CORBA.portable.ResponseHandler handler) {
+            if (!"valuesSampled".equals(method)) {
+                return super._invoke(method, input, handler);
+            }
+            SampledValue[] latest = CheckedValueReader.sampled(input);
+            org.omg.CORBA.portable.OutputStream out = handler.createReply();
+            valuesSampled(latest);
+            return out;
         }
 
         @Override

@@ -40,6 +40,7 @@ import org.fdnet.control.LocalLiveNetwork;
 import org.fdnet.corba.cli.ControlOptions;
 import org.fdnet.corba.control.ControlPublication;
 import org.fdnet.run.NetworkRun;
+import org.fdnet.tls.TlsOptions;
 
 /**
  * {@code fdnet demo}: a RoQ network (default networks/roq-rubble.fdn on the crossing course) on the real-time simulator, joined by the
@@ -91,6 +92,9 @@ public final class DemoCommand implements Callable<Integer> {
     @Mixin
     ControlOptions control;
 
+    @Mixin
+    TlsOptions tls = new TlsOptions();
+
     /** HOST:PORT of the embedded logger's viewer service; null when the demo records with no logger of its own. */
     private String loggerViewer;
 
@@ -114,6 +118,15 @@ public final class DemoCommand implements Callable<Integer> {
         }
         if (runFor.toMillis() < 1000) {
             System.err.println("fdnet demo: --for must be at least 1 s, was " + runFor.toMillis() + " ms");
+            return 2;
+        }
+        try { // as fdnet run: --tls, and no control object on a non-loopback address without it or --insecure
+            tls.apply();
+            if (!control.off()) {
+                tls.requireSafeBind("the network's control object", control.host());
+            }
+        } catch (IllegalArgumentException | IllegalStateException e) {
+            System.err.println("fdnet demo: " + e.getMessage());
             return 2;
         }
         Course c;

@@ -69,6 +69,27 @@ class DemoControlTest {
         assertThat(exit.get()).as(cli.output()).isZero();
     }
 
+    @Test
+    void shouldRefuseToPublishTheControlObjectOnANonLoopbackAddressWithoutTls() {
+        CliRun cli = new CliRun();
+        java.io.ByteArrayOutputStream err = new java.io.ByteArrayOutputStream();
+        java.io.PrintStream stderr = System.err;
+        int exit;
+        System.setErr(new java.io.PrintStream(err, true, java.nio.charset.StandardCharsets.UTF_8));
+        try { // the demo writes its errors to System.err
+            exit = cli.fdnet("demo", "--no-logger", "--for", "2s", "--network", RunOnSimulatorTest.WALK,
+                    "--control-host", "192.0.2.1");
+        } finally {
+            System.setErr(stderr);
+        }
+
+        String said = err.toString(java.nio.charset.StandardCharsets.UTF_8);
+        assertThat(exit).as(said).isEqualTo(2);
+        assertThat(said).contains("fdnet demo: the network's control object would listen on 192.0.2.1")
+                .contains("--tls").contains("--insecure");
+        assertThat(cli.output()).doesNotContain("summary:");
+    }
+
     /** The demo publishes once its simulator and network run: try for up to 30 s. */
     private static RemoteLiveNetwork attach(int port) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);

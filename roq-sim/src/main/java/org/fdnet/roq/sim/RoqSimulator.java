@@ -71,8 +71,8 @@ public final class RoqSimulator implements AutoCloseable {
         try {
             file = Files.createTempFile("roq-", ".xml");
             Files.writeString(file, mjcf);
-            handle = RoqNative.open(file.toString(), terrain.normalised(), NativeParameters.fragileFigures(course.fragileCells()),
-                    NativeParameters.of(options), block);
+            handle = RoqNative.open(file.toString(), terrain.normalised(),
+                    NativeParameters.fragileFigures(course.fragileCells()), NativeParameters.of(options), block);
         } catch (IOException e) {
             throw new UncheckedIOException("roq-sim: cannot write the model file " + file, e);
         } finally {

@@ -10,7 +10,7 @@ final class RoqNative {
     private RoqNative() {
     }
 
-    /** ABI handshake: the C side's {@code ROQ_LAYOUT_VERSION}. */
+    /** ABI handshake: the C side's layout version, {@code ROQ_VERSION}. */
     static native int abiVersion();
 
     /** ABI handshake: the C side's {@code ROQ_BLOCK_SIZE}. */

@@ -123,6 +123,7 @@ JNIEXPORT jlong JNICALL Java_org_fdnet_roq_sim_RoqNative_open(JNIEnv *env, jclas
     jdouble *p = f ? (*env)->GetDoubleArrayElements(env, params, NULL) : NULL;
     roq_handle *handle = NULL;
     if (p == NULL) {
+        (*env)->ExceptionClear(env); /* the JVM's bare OutOfMemoryError: replaced by one naming what failed */
         snprintf(error, sizeof error, "roq-sim: out of memory for the %s handed to open",
                  file == NULL ? "model path" : h == NULL ? "heights" : f == NULL ? "fragile cells" : "parameters");
     } else {
@@ -133,9 +134,7 @@ JNIEXPORT jlong JNICALL Java_org_fdnet_roq_sim_RoqNative_open(JNIEnv *env, jclas
     if (h) (*env)->ReleaseFloatArrayElements(env, heights, h, JNI_ABORT);
     if (file) (*env)->ReleaseStringUTFChars(env, path, file);
     if (handle == NULL) {
-        if (!(*env)->ExceptionCheck(env)) {
-            throw_state(env, error);
-        }
+        throw_state(env, error);
         return 0;
     }
     return (jlong)(intptr_t)handle;

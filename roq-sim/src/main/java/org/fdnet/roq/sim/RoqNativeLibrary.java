@@ -8,7 +8,8 @@ import java.util.List;
 
 /**
  * Loads {@code libroqsim.so} once per JVM and checks the ABI handshake: layout version and block size, then every
- * shared figure by name ({@link LayoutHandshake}). When something is missing it says which piece and the one command that installs it.
+ * shared figure by name ({@link LayoutHandshake}). When something is missing it says which piece and the one
+ * command that installs it.
  *
  * <p>Where the library is looked for: the system property {@value #LIBRARY_PROPERTY}; else {@code native/} beside
  * the directory or jar roq-sim's classes come from (the Maven build puts it in {@code roq-sim/target/native}).

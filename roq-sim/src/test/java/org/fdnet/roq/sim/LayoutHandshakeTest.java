@@ -25,7 +25,8 @@ class LayoutHandshakeTest {
     @Test
     void shouldAgreeOnEveryFieldOfTheBuiltLibrary() {
         assertThat(LayoutHandshake.mismatches(names, values)).isEmpty();
-        assertThat(names).as("every Java constant has its native entry").hasSize(LayoutHandshake.javaConstants().size());
+        assertThat(names).as("every Java constant has its native entry")
+                .hasSize(LayoutHandshake.javaConstants().size());
         assertThat(names).contains("S_GYRO", "ROQ_BLOCK_SIZE", "P_CAMERA_0", "F_STRENGTH", "X_KIND_BREAK");
     }
 
@@ -33,8 +34,9 @@ class LayoutHandshakeTest {
     void shouldNameAFieldMovedOnTheNativeSide() {
         long[] moved = values.clone();
         moved[Arrays.asList(names).indexOf("S_GYRO")] += 8;
+        int gyro = SharedBlockLayout.S_GYRO;
         assertThat(LayoutHandshake.mismatches(names, moved))
-                .containsExactly("S_GYRO: Java " + SharedBlockLayout.S_GYRO + ", native " + (SharedBlockLayout.S_GYRO + 8));
+                .containsExactly("S_GYRO: Java " + gyro + ", native " + (gyro + 8));
     }
 
     @Test

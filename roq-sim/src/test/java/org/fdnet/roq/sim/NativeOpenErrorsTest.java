@@ -51,7 +51,8 @@ class NativeOpenErrorsTest {
         double[] params = defaults();
         params[NativeParameters.P_US_PERIOD] = 0;
         assertThatThrownBy(() -> open(new double[0], params))
-                .hasMessageStartingWith("range sensor periods must be at least 1 tick").hasMessageContaining("ultrasonic 0");
+                .hasMessageStartingWith("range sensor periods must be at least 1 tick")
+                .hasMessageContaining("ultrasonic 0");
     }
 
     @Test

@@ -56,9 +56,9 @@ static int check_periods(const roq_params *p, char *msg, int size) {
                  (long long)p->ir_period, (long long)p->ultrasonic_period);
         return 1;
     }
-    if (p->depth_row_period < 1 || ROQ_DEPTH_W % p->depth_row_period != 0) {
+    if (p->depth_row_period < 1 || ROQ_DEPTH_WIDTH % p->depth_row_period != 0) {
         snprintf(msg, size, "depth row period %lld must divide the image width %d", (long long)p->depth_row_period,
-                 ROQ_DEPTH_W);
+                 ROQ_DEPTH_WIDTH);
         return 1;
     }
     return 0;

@@ -15,7 +15,6 @@
 #include <mujoco/mujoco.h>
 #include "roq_layout.h"
 
-#define ROQ_JOINTS_PER_LEG 3
 #define ROQ_GEOM_ROLE_CELL 100 /* geom_role of fragile cell i is ROQ_GEOM_ROLE_CELL + i */
 
 /* The servo: PD on the target through a DC motor's current and voltage limits. */

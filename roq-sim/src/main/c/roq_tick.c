@@ -235,21 +235,21 @@ static void range_sensors(const roq_model *model, roq_state *s) {
         }
         BLK_D(st, S_ULTRASONIC_RANGE)[0] = noisy(model, s, nearest, 0.005);
     }
-    /* The depth image, spread evenly: ROQ_DEPTH_W / depth_row_period pixels every tick, a frame every
-       depth_row_period × ROQ_DEPTH_H ticks. Spread, because one long ray over a tall heightfield can cost
+    /* The depth image, spread evenly: ROQ_DEPTH_WIDTH / depth_row_period pixels every tick, a frame every
+       depth_row_period × ROQ_DEPTH_HEIGHT ticks. Spread, because one long ray over a tall heightfield can cost
        30 µs in MuJoCo 2.2.2: a whole row in one tick overran the 1 ms period on the slope course. */
     const roq_camera_params *cam = &p->camera;
     int64_t period = p->depth_row_period;
-    int per_tick = ROQ_DEPTH_W / (int)period;
-    int first = (int)(s->tick % (period * ROQ_DEPTH_H)) * per_tick;
+    int per_tick = ROQ_DEPTH_WIDTH / (int)period;
+    int first = (int)(s->tick % (period * ROQ_DEPTH_HEIGHT)) * per_tick;
     for (int k = first; k < first + per_tick; k++) {
-        int row = k / ROQ_DEPTH_W, c = k % ROQ_DEPTH_W;
-        double pitch = cam->pitch_down + ((row + 0.5) / ROQ_DEPTH_H - 0.5) * cam->fov_y;
-        double yaw = -((c + 0.5) / ROQ_DEPTH_W - 0.5) * cam->fov_x;
+        int row = k / ROQ_DEPTH_WIDTH, c = k % ROQ_DEPTH_WIDTH;
+        double pitch = cam->pitch_down + ((row + 0.5) / ROQ_DEPTH_HEIGHT - 0.5) * cam->fov_y;
+        double yaw = -((c + 0.5) / ROQ_DEPTH_WIDTH - 0.5) * cam->fov_x;
         direction(pitch, yaw, dir);
         BLK_F(st, S_DEPTH)[k] = (float)ray(model, s, cam->position, dir, cam->max_range);
     }
-    if (first + per_tick == ROQ_DEPTH_W * ROQ_DEPTH_H) {
+    if (first + per_tick == ROQ_DEPTH_WIDTH * ROQ_DEPTH_HEIGHT) {
         s->depth_frames++;
     }
 }
@@ -428,7 +428,8 @@ roq_state *roq_state_open(const roq_model *model, unsigned char *block, char *er
         BLK_D(s->stage, S_ACCEL)[r] = s->d->sensordata[model->accel_adr + r] + s->imu_bias[3 + r];
     }
     int64_t period = model->params.depth_row_period;
-    for (int64_t t = 0; t < period * ROQ_DEPTH_H; t++) { /* a whole first image, so readers never see an empty one */
+    /* a whole first image, so readers never see an empty one */
+    for (int64_t t = 0; t < period * ROQ_DEPTH_HEIGHT; t++) {
         s->tick = t;
         state_sensors(model, s);
     }
@@ -437,7 +438,7 @@ roq_state *roq_state_open(const roq_model *model, unsigned char *block, char *er
     if (!model->params.range_sensors) {
         BLK_D(s->stage, S_IR_RANGE)[0] = NAN;
         BLK_D(s->stage, S_ULTRASONIC_RANGE)[0] = NAN;
-        for (int i = 0; i < ROQ_DEPTH_W * ROQ_DEPTH_H; i++) {
+        for (int i = 0; i < ROQ_DEPTH_WIDTH * ROQ_DEPTH_HEIGHT; i++) {
             BLK_F(s->stage, S_DEPTH)[i] = NAN;
         }
         s->depth_frames = 0;

@@ -28,6 +28,15 @@ public final class SharedBlockLayout {
     /** Size of the block, bytes. */
     public static final int BLOCK_SIZE = 16384;
 
+    // the robot's figures that size the arrays below (checked with the offsets, so C cannot size them otherwise)
+    public static final int LEGS = RoqGeometry.LEGS;
+    public static final int JOINTS_PER_LEG = RoqGeometry.JOINTS_PER_LEG;
+    public static final int JOINTS = RoqGeometry.JOINTS;
+    public static final int DEPTH_WIDTH = RoqGeometry.DEPTH_WIDTH;
+    public static final int DEPTH_HEIGHT = RoqGeometry.DEPTH_HEIGHT;
+    /** Fragile cells a course may have: the broken-cell mask holds this many bits. */
+    public static final int MAX_FRAGILE = Course.MAX_FRAGILE_CELLS;
+
     public static final int LAYOUT_VERSION = 0;
     public static final int SNAPSHOT_SEQ = 8;
     public static final int COMMAND_SEQ = 16;

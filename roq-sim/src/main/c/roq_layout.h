@@ -1,18 +1,18 @@
 /*
- * Everything Java and C must agree on, in ONE table: the byte layout of the block they share, the indices of the
- * parameter array handed over at open and the figures of one fragile cell. ROQ_LAYOUT below is that table; the
- * enum the C code uses and the table roq_jni.c exports to Java (RoqNative.layoutNames/layoutValues) are both
- * expanded from it, so the two cannot drift. At load RoqNativeLibrary compares every entry by name with the
- * constant of the same name in org.fdnet.roq.sim.SharedBlockLayout or NativeParameters (a leading "ROQ_" is not
- * part of the name), and every such Java constant with the table: a field moved, added or dropped on one side
- * only fails the load, naming the field.
+ * Everything Java and C must agree on, in ONE table: the byte layout of the block they share, the robot's figures
+ * that size its arrays, the indices of the parameter array handed over at open and the figures of one fragile
+ * cell. ROQ_LAYOUT below is that table; the enum the C code uses and the table roq_jni.c exports to Java
+ * (RoqNative.layoutNames/layoutValues) are both expanded from it, so the two cannot drift. At load
+ * RoqNativeLibrary compares every entry by name with the constant of the same name in
+ * org.fdnet.roq.sim.SharedBlockLayout or NativeParameters (a leading "ROQ_" is not part of the name), and every
+ * such Java constant with the table: a field moved, added or dropped on one side only fails the load, naming it.
  */
 #ifndef ROQ_LAYOUT_H
 #define ROQ_LAYOUT_H
 
 /* X(name, value): one entry per shared figure. Layout entries are byte offsets into the block unless the comment
    says otherwise. */
-#define ROQ_LAYOUT(X)                                                                                               \
+#define ROQ_LAYOUT(X)                                                                                                \
     /* sizes and versions */                                                                                         \
     X(ROQ_VERSION, 5)            /* the layout version: changes whenever an offset does */                           \
     X(ROQ_BLOCK_SIZE, 16384)     /* bytes */                                                                         \

@@ -27,5 +27,5 @@ if [ -f "$lib" ] && [ -z "$(find "$src" "$out/include" -newer "$lib" -type f -pr
 fi
 gcc -std=gnu11 -O2 -g -fPIC -shared -Wall -Wextra -Werror -Wno-unused-parameter \
     -I"$java_home/include" -I"$java_home/include/linux" -I"$out/include" -I"$src" \
-    -o "$lib.tmp" "$src"/roq_tick.c "$src"/roq_ray.c "$src"/roq_loop.c "$src"/roq_jni.c -lmujoco -lpthread -lm
+    -o "$lib.tmp" "$src"/roq_model.c "$src"/roq_tick.c "$src"/roq_ray.c "$src"/roq_loop.c "$src"/roq_jni.c -lmujoco -lpthread -lm
 mv "$lib.tmp" "$lib"

@@ -2,7 +2,8 @@
  * The real-time thread: 1 kHz on absolute deadlines (clock_nanosleep TIMER_ABSTIME), SCHED_FIFO, mlockall and
  * /dev/cpu_dma_latency = 0 when permitted. Per period: sleep, measure the wake-up latency, run one tick, count an
  * overrun when the tick ends after the next deadline. The only system call in the loop is the sleep
- * (clock_gettime is served by the vDSO).
+ * (clock_gettime is served by the vDSO). The thread's own struct is roq_rt (roq_loop.h); it ticks the model and
+ * state it was started with and nothing else.
  */
 #define _GNU_SOURCE
 #include <errno.h>
@@ -14,6 +15,7 @@
 #include <sys/prctl.h>
 #include <time.h>
 #include <unistd.h>
+#include "roq_loop.h"
 #include "roq_sim.h"
 
 #define NS_PER_S 1000000000LL
@@ -27,14 +29,14 @@ static void set_ns(struct timespec *t, int64_t v) {
     t->tv_nsec = v % NS_PER_S;
 }
 
-void roq_record_latency(roq_sim *s, int64_t latency_ns) {
+void roq_record_latency(roq_state *s, int64_t latency_ns) {
     unsigned char *st = s->stage;
     int64_t bin = latency_ns / 1000;
     if (bin < 0) {
         bin = 0;
     }
-    if (bin >= ROQ_HIST_BINS) {
-        bin = ROQ_HIST_BINS - 1;
+    if (bin >= ROQ_HISTOGRAM_BINS) {
+        bin = ROQ_HISTOGRAM_BINS - 1;
     }
     BLK_I(st, T_HISTOGRAM)[bin]++;
     s->histogram_bin = (int)bin;
@@ -45,24 +47,25 @@ void roq_record_latency(roq_sim *s, int64_t latency_ns) {
 }
 
 static void *loop(void *arg) {
-    roq_sim *s = arg;
+    roq_rt *rt = arg;
+    roq_state *s = rt->state;
     prctl(PR_SET_TIMERSLACK, 1UL, 0, 0, 0);
     struct timespec now, deadline;
     clock_gettime(CLOCK_MONOTONIC, &now);
-    int64_t next = ns(&now) + s->period_ns;
-    while (__atomic_load_n(&s->running, __ATOMIC_ACQUIRE)) {
+    int64_t next = ns(&now) + rt->period_ns;
+    while (__atomic_load_n(&rt->running, __ATOMIC_ACQUIRE)) {
         set_ns(&deadline, next);
         clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &deadline, NULL);
         clock_gettime(CLOCK_MONOTONIC, &now);
         int64_t woke = ns(&now);
         roq_record_latency(s, woke - next);
-        roq_tick(s);
+        roq_tick(rt->model, s);
         clock_gettime(CLOCK_MONOTONIC, &now);
         int64_t end = ns(&now);
         if (end - woke > *BLK_L(s->stage, T_MAX_TICK_NS)) {
             *BLK_L(s->stage, T_MAX_TICK_NS) = end - woke; /* published with the next tick */
         }
-        next += s->period_ns;
+        next += rt->period_ns;
         if (end > next) {
             unsigned char *st = s->stage;
             (*BLK_L(st, T_OVERRUNS))++;
@@ -70,7 +73,7 @@ static void *loop(void *arg) {
                 *BLK_L(st, T_MAX_OVERRUN_NS) = end - next;
             }
             while (next < end) { /* missed deadlines are skipped, not caught up in a burst */
-                next += s->period_ns;
+                next += rt->period_ns;
             }
         }
     }
@@ -82,24 +85,26 @@ static void warn(char *warnings, int size, const char *what, int err) {
     snprintf(warnings + used, (size_t)size - used, "%s%s (%s)", used ? ", " : "", what, strerror(err));
 }
 
-int roq_start(roq_sim *s, int priority, char *warnings, int warnings_size) {
+int roq_rt_start(roq_rt *rt, roq_model *model, roq_state *state, int priority, char *warnings, int warnings_size) {
     int64_t flags = 0;
     warnings[0] = 0;
-    s->period_ns = 1000000;
+    rt->model = model;
+    rt->state = state;
+    rt->period_ns = 1000000;
     if (mlockall(MCL_CURRENT | MCL_FUTURE) == 0) {
         flags |= RT_MLOCKALL;
     } else {
         warn(warnings, warnings_size, "mlockall", errno);
     }
-    s->dma_fd = open("/dev/cpu_dma_latency", O_RDWR);
-    if (s->dma_fd >= 0) {
+    rt->dma_fd = open("/dev/cpu_dma_latency", O_RDWR);
+    if (rt->dma_fd >= 0) {
         int32_t zero = 0;
-        if (write(s->dma_fd, &zero, sizeof zero) == sizeof zero) {
+        if (write(rt->dma_fd, &zero, sizeof zero) == sizeof zero) {
             flags |= RT_DMA_LATENCY;
         } else {
             warn(warnings, warnings_size, "/dev/cpu_dma_latency", errno);
-            close(s->dma_fd);
-            s->dma_fd = -1;
+            close(rt->dma_fd);
+            rt->dma_fd = -1;
         }
     } else {
         warn(warnings, warnings_size, "/dev/cpu_dma_latency", errno);
@@ -110,19 +115,19 @@ int roq_start(roq_sim *s, int priority, char *warnings, int warnings_size) {
     pthread_attr_setschedpolicy(&attr, SCHED_FIFO);
     struct sched_param sp = {.sched_priority = priority};
     pthread_attr_setschedparam(&attr, &sp);
-    __atomic_store_n(&s->running, 1, __ATOMIC_RELEASE);
-    int rc = pthread_create(&s->thread, &attr, loop, s);
+    __atomic_store_n(&rt->running, 1, __ATOMIC_RELEASE);
+    int rc = pthread_create(&rt->thread, &attr, loop, rt);
     pthread_attr_destroy(&attr);
     if (rc == 0) {
         flags |= RT_SCHED_FIFO;
     } else {
         warn(warnings, warnings_size, "SCHED_FIFO", rc);
-        rc = pthread_create(&s->thread, NULL, loop, s);
+        rc = pthread_create(&rt->thread, NULL, loop, rt);
         if (rc != 0) { /* no thread at all: give back what was taken */
-            __atomic_store_n(&s->running, 0, __ATOMIC_RELEASE);
-            if (s->dma_fd >= 0) {
-                close(s->dma_fd);
-                s->dma_fd = -1;
+            __atomic_store_n(&rt->running, 0, __ATOMIC_RELEASE);
+            if (rt->dma_fd >= 0) {
+                close(rt->dma_fd);
+                rt->dma_fd = -1;
             }
             if (flags & RT_MLOCKALL) {
                 munlockall();
@@ -130,24 +135,25 @@ int roq_start(roq_sim *s, int priority, char *warnings, int warnings_size) {
             return rc;
         }
     }
-    pthread_setname_np(s->thread, "roq-joint-loop");
-    *BLK_L(s->stage, T_RT_FLAGS) = flags;
-    s->thread_started = 1;
+    pthread_setname_np(rt->thread, "roq-joint-loop");
+    rt->flags = flags;
+    *BLK_L(state->stage, T_RT_FLAGS) = flags; /* published with the next tick */
+    rt->started = 1;
     return 0;
 }
 
-void roq_stop(roq_sim *s) {
-    if (!s->thread_started) {
+void roq_rt_stop(roq_rt *rt) {
+    if (!rt->started) {
         return;
     }
-    __atomic_store_n(&s->running, 0, __ATOMIC_RELEASE);
-    pthread_join(s->thread, NULL);
-    s->thread_started = 0;
-    if (s->dma_fd >= 0) {
-        close(s->dma_fd);
-        s->dma_fd = -1;
+    __atomic_store_n(&rt->running, 0, __ATOMIC_RELEASE);
+    pthread_join(rt->thread, NULL);
+    rt->started = 0;
+    if (rt->dma_fd >= 0) {
+        close(rt->dma_fd);
+        rt->dma_fd = -1;
     }
-    if (*BLK_L(s->stage, T_RT_FLAGS) & RT_MLOCKALL) {
+    if (rt->flags & RT_MLOCKALL) {
         munlockall();
     }
 }

@@ -36,9 +36,9 @@ static double triangle(const mjtNum o[3], const mjtNum v[3], const double a[3], 
 }
 
 /* The nearer hit of the two triangles of cell (r, c), in world coordinates, or -1. */
-static double cell(const roq_sim *s, int r, int c, const mjtNum o[3], const mjtNum v[3]) {
-    const mjModel *m = s->m;
-    int g = s->terrain_geom;
+static double cell(const roq_model *model, int r, int c, const mjtNum o[3], const mjtNum v[3]) {
+    const mjModel *m = model->m;
+    int g = model->terrain_geom;
     int h = m->geom_dataid[g];
     int ncol = m->hfield_ncol[h];
     const float *data = m->hfield_data + m->hfield_adr[h];
@@ -60,9 +60,9 @@ static double cell(const roq_sim *s, int r, int c, const mjtNum o[3], const mjtN
 }
 
 /* Surface height at grid-frame point (x, y), bilinear within its cell (exact along the grid's border edges). */
-static double surface(const roq_sim *s, double x, double y) {
-    const mjModel *m = s->m;
-    int g = s->terrain_geom;
+static double surface(const roq_model *model, double x, double y) {
+    const mjModel *m = model->m;
+    int g = model->terrain_geom;
     int h = m->geom_dataid[g];
     int nrow = m->hfield_nrow[h], ncol = m->hfield_ncol[h];
     const float *data = m->hfield_data + m->hfield_adr[h];
@@ -78,13 +78,13 @@ static double surface(const roq_sim *s, double x, double y) {
 }
 
 /* A ray crossing the grid's border below the surface meets the heightfield's side wall (as in MuJoCo). */
-static int through_wall(const roq_sim *s, const mjtNum o[3], const mjtNum v[3], double t, double ox, double oy) {
-    return o[2] + v[2] * t < surface(s, ox + v[0] * t, oy + v[1] * t);
+static int through_wall(const roq_model *model, const mjtNum o[3], const mjtNum v[3], double t, double ox, double oy) {
+    return o[2] + v[2] * t < surface(model, ox + v[0] * t, oy + v[1] * t);
 }
 
-static double terrain(const roq_sim *s, const mjtNum o[3], const mjtNum v[3], double max_range) {
-    const mjModel *m = s->m;
-    int g = s->terrain_geom;
+static double terrain(const roq_model *model, const mjtNum o[3], const mjtNum v[3], double max_range) {
+    const mjModel *m = model->m;
+    int g = model->terrain_geom;
     int h = m->geom_dataid[g];
     int nrow = m->hfield_nrow[h], ncol = m->hfield_ncol[h];
     const mjtNum *size = m->hfield_size + 4 * h;
@@ -111,7 +111,7 @@ static double terrain(const roq_sim *s, const mjtNum o[3], const mjtNum v[3], do
     if (lo > hi) {
         return -1;
     }
-    if (lo > 0 && through_wall(s, o, v, lo, ox, oy)) {
+    if (lo > 0 && through_wall(model, o, v, lo, ox, oy)) {
         return lo;
     }
     int leaves = hi < max_range; /* the ray leaves the grid within range: it may meet the far wall */
@@ -125,7 +125,7 @@ static double terrain(const roq_sim *s, const mjtNum o[3], const mjtNum v[3], do
     double delta_x = fabs(v[0]) < 1e-15 ? INFINITY : dx / fabs(v[0]);
     double delta_y = fabs(v[1]) < 1e-15 ? INFINITY : dy / fabs(v[1]);
     for (;;) {
-        double t = cell(s, r, c, o, v);
+        double t = cell(model, r, c, o, v);
         if (t >= 0) {
             return t <= max_range ? t : -1;
         }
@@ -146,18 +146,19 @@ static double terrain(const roq_sim *s, const mjtNum o[3], const mjtNum v[3], do
             break;
         }
     }
-    return leaves && through_wall(s, o, v, hi, ox, oy) ? hi : -1;
+    return leaves && through_wall(model, o, v, hi, ox, oy) ? hi : -1;
 }
 
-double roq_ground_ray(const roq_sim *s, const mjtNum pnt[3], const mjtNum vec[3], double max_range) {
-    double best = terrain(s, pnt, vec, max_range);
-    for (int i = 0; i < s->nfragile; i++) {
-        if (s->fragile_broken[i]) {
+double roq_ground_ray(const roq_model *model, const roq_state *state, const mjtNum pnt[3], const mjtNum vec[3],
+                      double max_range) {
+    double best = terrain(model, pnt, vec, max_range);
+    for (int i = 0; i < model->nfragile; i++) {
+        if (state->cell[i].broken) {
             continue;
         }
-        int g = s->fragile_geom[i];
-        mjtNum t = mju_rayGeom(s->d->geom_xpos + 3 * g, s->d->geom_xmat + 9 * g, s->m->geom_size + 3 * g, pnt, vec,
-                               mjGEOM_BOX);
+        int g = model->fragile[i].geom;
+        mjtNum t = mju_rayGeom(state->d->geom_xpos + 3 * g, state->d->geom_xmat + 9 * g, model->m->geom_size + 3 * g,
+                               pnt, vec, mjGEOM_BOX);
         if (t >= 0 && t <= max_range && (best < 0 || t < best)) {
             best = t;
         }

@@ -10,14 +10,17 @@ final class RoqNative {
     private RoqNative() {
     }
 
-    /** ABI handshake: the C side's {@code ROQ_LAYOUT_VERSION}. */
+    /** ABI handshake: the C side's layout version, {@code ROQ_VERSION}. */
     static native int abiVersion();
 
     /** ABI handshake: the C side's {@code ROQ_BLOCK_SIZE}. */
     static native int blockSize();
 
-    /** ABI handshake: every offset of the C side's layout, in the order of {@link SharedBlockLayout#FIELDS}. */
-    static native int[] layoutOffsets();
+    /** ABI handshake: the names of the C side's {@code ROQ_LAYOUT} table (roq_layout.h), in table order. */
+    static native String[] layoutNames();
+
+    /** ABI handshake: the values of the {@code ROQ_LAYOUT} table, in the order of {@link #layoutNames()}. */
+    static native long[] layoutValues();
 
     /**
      * Loads the model file, fills the heightfield with {@code heights} (already scaled to 0..1), sets the robot in its initial pose and publishes the first
@@ -40,7 +43,10 @@ final class RoqNative {
     /** FNV-1a hash over the bits of time, qpos, qvel, qacc and the fragile cells' state. */
     static native long stateHash(long handle);
 
-    /** Runs a bare {@code mj_step} loop for {@code ticks} on a copy of the model's data; returns nanoseconds. */
+    /**
+     * Runs a bare {@code mj_step} loop for {@code ticks} on a copy of the model's data; returns nanoseconds. Throws
+     * {@link IllegalStateException} when MuJoCo cannot allocate the copy.
+     */
     static native long bareStepNanos(long handle, int ticks);
 
     /**

@@ -4,10 +4,12 @@ import java.net.URISyntaxException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.CodeSource;
+import java.util.List;
 
 /**
- * Loads {@code libroqsim.so} once per JVM and checks the ABI handshake (layout version and block size against
- * {@link SharedBlockLayout}). When something is missing it says which piece and the one command that installs it.
+ * Loads {@code libroqsim.so} once per JVM and checks the ABI handshake: layout version and block size, then every
+ * shared figure by name ({@link LayoutHandshake}). When something is missing it says which piece and the one
+ * command that installs it.
  *
  * <p>Where the library is looked for: the system property {@value #LIBRARY_PROPERTY}; else {@code native/} beside
  * the directory or jar roq-sim's classes come from (the Maven build puts it in {@code roq-sim/target/native}).
@@ -53,11 +55,13 @@ public final class RoqNativeLibrary {
         }
         int abi;
         int size;
-        int[] offsets;
+        String[] names;
+        long[] values;
         try {
             abi = RoqNative.abiVersion();
             size = RoqNative.blockSize();
-            offsets = RoqNative.layoutOffsets();
+            names = RoqNative.layoutNames();
+            values = RoqNative.layoutValues();
         } catch (UnsatisfiedLinkError e) {
             throw new NativeLibraryUnavailableException("roq-sim: " + loaded + " lacks the JNI entry points of this "
                     + "roq-sim (an old or foreign build); rebuild: mvn -B -pl roq-sim -am -DskipTests package", e);
@@ -67,11 +71,12 @@ public final class RoqNativeLibrary {
                     + " (block " + size + " bytes), this roq-sim needs version " + SharedBlockLayout.VERSION + " ("
                     + SharedBlockLayout.BLOCK_SIZE + " bytes); rebuild: mvn -B -pl roq-sim -am -DskipTests package", null);
         }
-        String moved = SharedBlockLayout.firstMismatch(offsets);
-        if (moved != null) {
+        List<String> moved = LayoutHandshake.mismatches(names, values);
+        if (!moved.isEmpty()) {
             throw new NativeLibraryUnavailableException("roq-sim: " + loaded + " and this roq-sim disagree on the shared "
-                    + "block's layout (" + moved + "): roq_layout.h and SharedBlockLayout.java must move a field "
-                    + "together; rebuild: mvn -B -pl roq-sim -am -DskipTests package", null);
+                    + "layout (" + String.join("; ", moved) + "): the ROQ_LAYOUT table of roq_layout.h and "
+                    + "SharedBlockLayout.java / NativeParameters.java must change a field together; rebuild: "
+                    + "mvn -B -pl roq-sim -am -DskipTests package", null);
         }
     }
 

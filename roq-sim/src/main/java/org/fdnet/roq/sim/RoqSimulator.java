@@ -8,7 +8,6 @@ import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -72,8 +71,8 @@ public final class RoqSimulator implements AutoCloseable {
         try {
             file = Files.createTempFile("roq-", ".xml");
             Files.writeString(file, mjcf);
-            handle = RoqNative.open(file.toString(), terrain.normalised(), fragileFigures(course.fragileCells()),
-                    NativeParameters.of(options), block);
+            handle = RoqNative.open(file.toString(), terrain.normalised(),
+                    NativeParameters.fragileFigures(course.fragileCells()), NativeParameters.of(options), block);
         } catch (IOException e) {
             throw new UncheckedIOException("roq-sim: cannot write the model file " + file, e);
         } finally {
@@ -108,20 +107,6 @@ public final class RoqSimulator implements AutoCloseable {
         } catch (IOException e) {
             LOG.warn("roq-sim: cannot delete the temporary model file {}: {}", file, e.getMessage());
         }
-    }
-
-    private static double[] fragileFigures(List<FragileCell> cells) {
-        double[] f = new double[cells.size() * 6];
-        for (int i = 0; i < cells.size(); i++) {
-            FragileCell c = cells.get(i);
-            f[6 * i] = c.x();
-            f[6 * i + 1] = c.y();
-            f[6 * i + 2] = c.sizeX();
-            f[6 * i + 3] = c.sizeY();
-            f[6 * i + 4] = c.height();
-            f[6 * i + 5] = c.strength();
-        }
-        return f;
     }
 
     /** The course this simulator runs. */

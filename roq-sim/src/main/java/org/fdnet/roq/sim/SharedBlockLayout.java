@@ -1,10 +1,11 @@
 package org.fdnet.roq.sim;
 
 /**
- * The byte layout of the one direct buffer Java and the C joint loop share. The same offsets are named constants
- * in {@code src/main/c/roq_layout.h} (checked at start: the C side reports its {@code ROQ_BLOCK_SIZE} and
- * {@code ROQ_LAYOUT_VERSION} through the ABI handshake). All numbers are in the platform's byte order; doubles are
- * IEEE 754, 8-byte aligned.
+ * The byte layout of the one direct buffer Java and the C joint loop share. The C side's one source is the
+ * {@code ROQ_LAYOUT} table in {@code src/main/c/roq_layout.h}; at load {@link LayoutHandshake} compares every
+ * {@code int} and {@code long} constant of this class by name with that table (and every table entry with a
+ * constant here or in {@link NativeParameters}), so a field moved, added or dropped on one side only fails the
+ * load and is named. All numbers are in the platform's byte order; doubles are IEEE 754, 8-byte aligned.
  *
  * <pre>
  *  0      int32  layout version ({@link #VERSION})
@@ -26,6 +27,15 @@ public final class SharedBlockLayout {
     public static final int VERSION = 5;
     /** Size of the block, bytes. */
     public static final int BLOCK_SIZE = 16384;
+
+    // the robot's figures that size the arrays below (checked with the offsets, so C cannot size them otherwise)
+    public static final int LEGS = RoqGeometry.LEGS;
+    public static final int JOINTS_PER_LEG = RoqGeometry.JOINTS_PER_LEG;
+    public static final int JOINTS = RoqGeometry.JOINTS;
+    public static final int DEPTH_WIDTH = RoqGeometry.DEPTH_WIDTH;
+    public static final int DEPTH_HEIGHT = RoqGeometry.DEPTH_HEIGHT;
+    /** Fragile cells a course may have: the broken-cell mask holds this many bits. */
+    public static final int MAX_FRAGILE = Course.MAX_FRAGILE_CELLS;
 
     public static final int LAYOUT_VERSION = 0;
     public static final int SNAPSHOT_SEQ = 8;
@@ -117,45 +127,6 @@ public final class SharedBlockLayout {
     public static final long RT_SCHED_FIFO = 1;
     public static final long RT_MLOCKALL = 2;
     public static final long RT_DMA_LATENCY = 4;
-
-    /**
-     * Every offset in the order of {@code ROQ_LAYOUT_OFFSETS} in roq_layout.h: the handshake compares the two lists
-     * field by field, so a field moved on one side only is caught and named.
-     */
-    static final String[] FIELDS = {"LAYOUT_VERSION", "SNAPSHOT_SEQ", "COMMAND_SEQ", "STIMULUS_SEQ",
-        "S_TICK", "S_TIME", "S_JOINT_ANGLE", "S_JOINT_VELOCITY", "S_JOINT_TORQUE", "S_ROLL", "S_PITCH", "S_FOOT_FORCE",
-        "S_IR_RANGE", "S_ULTRASONIC_RANGE", "S_BODY_POSITION", "S_BODY_QUATERNION", "S_CENTRE_OF_MASS",
-        "S_WHEEL_SPEED", "S_BROKEN_COUNT", "S_BROKEN_MASK", "S_DEPTH_FRAMES", "S_DEPTH", "S_GYRO", "S_ACCEL",
-        "S_PUSH_FORCE", "S_END", "T_TICKS", "T_OVERRUNS", "T_MAX_OVERRUN_NS", "T_MAX_LATENCY_NS", "T_LATENCY_SAMPLES",
-        "T_COMMANDS_APPLIED", "T_COMMANDS_NAN", "T_COMMANDS_OUT_OF_RANGE", "T_COMMANDS_STALE", "T_RT_FLAGS",
-        "T_MAX_TICK_NS", "T_LAST_APPLIED_TICK", "T_LAST_APPLIED_BASED_ON", "T_HISTOGRAM", "T_REFLEX_HISTOGRAM",
-        "C_ISSUED_TICK", "C_TARGETS", "C_WHEEL_SPEED", "C_FLAGS", "C_SOURCE_TICK", "A_RING", "A_ENTRY_SIZE", "APPLIED_RING", "X_COUNT", "X_TABLE", "X_ENTRY_SIZE", "MAX_STIMULI"};
-    static final int[] OFFSETS = {LAYOUT_VERSION, SNAPSHOT_SEQ, COMMAND_SEQ, STIMULUS_SEQ,
-        S_TICK, S_TIME, S_JOINT_ANGLE, S_JOINT_VELOCITY, S_JOINT_TORQUE, S_ROLL, S_PITCH, S_FOOT_FORCE,
-        S_IR_RANGE, S_ULTRASONIC_RANGE, S_BODY_POSITION, S_BODY_QUATERNION, S_CENTRE_OF_MASS,
-        S_WHEEL_SPEED, S_BROKEN_COUNT, S_BROKEN_MASK, S_DEPTH_FRAMES, S_DEPTH, S_GYRO, S_ACCEL,
-        S_PUSH_FORCE, S_END, T_TICKS, T_OVERRUNS, T_MAX_OVERRUN_NS, T_MAX_LATENCY_NS, T_LATENCY_SAMPLES,
-        T_COMMANDS_APPLIED, T_COMMANDS_NAN, T_COMMANDS_OUT_OF_RANGE, T_COMMANDS_STALE, T_RT_FLAGS,
-        T_MAX_TICK_NS, T_LAST_APPLIED_TICK, T_LAST_APPLIED_BASED_ON, T_HISTOGRAM, T_REFLEX_HISTOGRAM,
-        C_ISSUED_TICK, C_TARGETS, C_WHEEL_SPEED, C_FLAGS, C_SOURCE_TICK, A_RING, A_ENTRY_SIZE, APPLIED_RING, X_COUNT, X_TABLE, X_ENTRY_SIZE, MAX_STIMULI};
-
-    /**
-     * The first field whose offset differs between {@link #OFFSETS} and the native side's {@code nativeOffsets}, as
-     * "S_GYRO: Java 3664, native 3672", or null when they agree.
-     */
-    static String firstMismatch(int[] nativeOffsets) {
-        for (int i = 0; i < FIELDS.length; i++) {
-            if (i >= nativeOffsets.length) {
-                return FIELDS[i] + ": Java " + OFFSETS[i] + ", not in the native layout (" + nativeOffsets.length
-                        + " fields)";
-            }
-            if (OFFSETS[i] != nativeOffsets[i]) {
-                return FIELDS[i] + ": Java " + OFFSETS[i] + ", native " + nativeOffsets[i];
-            }
-        }
-        return nativeOffsets.length > FIELDS.length
-                ? "the native layout has " + nativeOffsets.length + " fields, Java " + FIELDS.length : null;
-    }
 
     /** A command older than this many ticks when the loop sees it is ignored and counted stale. */
     public static final int STALE_TICKS = 100;

@@ -102,15 +102,6 @@ class PushTest {
         }
     }
 
-    @Test
-    void shouldNameAFieldMovedOnOneSideOfTheLayout() {
-        int[] moved = SharedBlockLayout.OFFSETS.clone();
-        int gyro = java.util.Arrays.asList(SharedBlockLayout.FIELDS).indexOf("S_GYRO");
-        moved[gyro] += 8;
-        assertThat(SharedBlockLayout.firstMismatch(moved)).startsWith("S_GYRO: Java");
-        assertThat(SharedBlockLayout.firstMismatch(RoqNative.layoutOffsets())).isNull();
-    }
-
     /** Body displacement (x, y) from 0.4 s to 1.5 s, under {@code push} (or none). */
     private static double[] displacementUnder(Push push) {
         Course c = push == null ? Course.flat() : Course.flat().withStimuli(List.of(push));

@@ -60,7 +60,7 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
     private final int ownWorkers; // fdnet host --workers, else one per core: a run that names none gets these
 
     /** The most worker threads a run may ask a host for; the most events a host keeps for a run's trace. */
-    static final int MAX_WORKERS = 256;
+    public static final int MAX_WORKERS = 256;
     static final int MAX_TRACE_CAPACITY = 1_000_000;
 
     private RuntimeLocalNetwork(String hostName, RuntimeNetwork runtime) {

@@ -65,7 +65,8 @@ public final class TraceCollector implements AutoCloseable {
             try {
                 Thread.sleep(PERIOD_MILLIS);
             } catch (InterruptedException e) {
-                return; // closed
+                Thread.currentThread().interrupt();
+                return;
             }
         }
     }
@@ -128,8 +129,7 @@ public final class TraceCollector implements AutoCloseable {
         if (closed) {
             return;
         }
-        closed = true;
-        thread.interrupt();
+        closed = true; // not interrupted: an ORB call cut short would lose the batch it carried
         try {
             thread.join(5_000);
         } catch (InterruptedException e) {

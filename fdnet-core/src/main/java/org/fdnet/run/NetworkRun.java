@@ -13,6 +13,7 @@ import org.fdnet.control.ControlledLiveNetwork;
 import org.fdnet.control.LiveNetwork;
 import org.fdnet.corba.DeploymentException;
 import org.fdnet.corba.DistributedRun;
+import org.fdnet.corba.RuntimeLocalNetwork;
 import org.fdnet.corba.TraceCollector;
 import org.fdnet.corba.control.ControlPublication;
 import org.fdnet.event.EventSink;
@@ -210,8 +211,9 @@ public final class NetworkRun {
                 return "--logger " + options.logger + ": " + e.getMessage();
             }
         }
-        if (options.workers != null && options.workers < 1) {
-            return "--workers " + options.workers + ": a network's engine runs at least 1 worker thread";
+        if (options.workers != null && (options.workers < 1 || options.workers > RuntimeLocalNetwork.MAX_WORKERS)) {
+            return "--workers " + options.workers + ": a network's engine runs 1 to " + RuntimeLocalNetwork.MAX_WORKERS
+                    + " worker threads";
         }
         if (!options.distribution.appliesTo(definition)) {
             return null;

@@ -1,6 +1,7 @@
 package org.fdnet.run;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
@@ -108,26 +109,67 @@ class DistributedRunOptionsTest {
     }
 
     @Test
-    void shouldTraceThisProcessesHostAndSaySoForTheOtherHosts() throws Exception {
-        Finished run = runFor("--trace");
+    void shouldTraceEveryHostsOwnEventsEachLineNamingItsHost() throws Exception {
+        Finished run = runFor("--as", "station", "--trace");
         assertThat(run.exit).as(run.output).isZero();
-        // what --trace can show here, said before it shows it: the flyer's own events stay on the flyer
-        assertThat(run.output).containsPattern("--trace: this process's host \\S+ \\(its nodes")
-                .contains("the other hosts' own events stay there (record them with --logger");
-        // this process's share: the Operator and its stand-ins of the flyer's Datas, as they are made and run
-        assertThat(run.output).containsPattern("trace +[\\d.]+ named +#\\d+ Data main/Level")
-                .containsPattern("trace +[\\d.]+ relation main/Operator RUNNING");
+        assertThat(run.output).contains("--trace: every host's own events");
+        // the flyer's own events, read from the flyer: its nodes named, its Source running and writing Level
+        assertThat(run.output).as(run.output)
+                .containsPattern("trace +[\\d.]+ flyer named +#\\d+ Data main/Level")
+                .containsPattern("trace +[\\d.]+ flyer relation main/Source RUNNING")
+                .containsPattern("trace +[\\d.]+ flyer value +main/Level = 1\\.0");
+        // this process's host's own: the Operator; its stand-in of Level is the flyer's Data, traced there only
+        assertThat(run.output)
+                .containsPattern("trace +[\\d.]+ station relation main/Operator RUNNING")
+                .doesNotContainPattern("trace +[\\d.]+ station named +#\\d+ Data main/Level")
+                .doesNotContain("trace lines dropped");
+        assertThat(run.output).containsPattern("trace so far: .*flyer [\\d,]+ lines \\(0 dropped\\)");
     }
 
     @Test
-    void shouldRefuseWorkersByNameAndSizeEachHostWhereItStarts() throws Exception {
-        Finished run = runFor("--workers", "3");
-        assertThat(run.exit).as(run.output).isEqualTo(2);
-        assertThat(run.output).contains("--workers 3: sizes one engine")
-                .contains("fdnet host --name HOST --workers N");
-        // the flyer was started with --workers 2 and says so; the other tests' runs deploy onto it
-        assertThat(flyer.output()).anyMatch(line -> line.contains("fdnet host flyer ready")
-                && line.contains("2 worker threads"));
+    void shouldSizeEveryHostsEngineForTheRunAndLeaveTheHostsOwnCountToARunWithoutWorkers() throws Exception {
+        try (Running run = start("--as", "station", "--workers", "3")) {
+            assertThat(run.output()).as(run.output()).containsPattern("worker threads for this run: .*flyer 3")
+                    .containsPattern("worker threads for this run: .*station 3");
+            // the flyer's engine really runs 3 worker threads for this run (its own count is 2)
+            assertThat(awaitWorkerThreads(flyer.pid(), 3)).isEqualTo(3);
+        }
+        try (Running run = start("--as", "station")) {
+            assertThat(run.output()).as(run.output()).containsPattern("worker threads for this run: .*flyer 2");
+            assertThat(awaitWorkerThreads(flyer.pid(), 2)).isEqualTo(2);
+        }
+        Finished none = runFor("--workers", "0");
+        assertThat(none.exit).isEqualTo(2);
+        assertThat(none.output).contains("--workers 0: a network's engine runs 1 to 256 worker threads");
+    }
+
+    /**
+     * The worker threads process {@code pid} runs, counted by their names in {@code /proc/PID/task/&#42;/comm} (Linux),
+     * once they equal {@code expected} or after 10 s: a retired worker stops after its current poll.
+     */
+    private static int awaitWorkerThreads(long pid, int expected) throws Exception {
+        long deadline = System.currentTimeMillis() + 10_000;
+        int count;
+        while ((count = workerThreadsOf(pid)) != expected && System.currentTimeMillis() < deadline) {
+            Thread.sleep(50);
+        }
+        return count;
+    }
+
+    private static int workerThreadsOf(long pid) throws java.io.IOException {
+        int count = 0;
+        try (java.util.stream.Stream<Path> tasks = Files.list(Path.of("/proc", Long.toString(pid), "task"))) {
+            for (Path task : (Iterable<Path>) tasks::iterator) {
+                try {
+                    if (Files.readString(task.resolve("comm")).startsWith("fdnet-worker-")) {
+                        count++;
+                    }
+                } catch (java.nio.file.NoSuchFileException ended) {
+                    // the thread ended while it was being listed
+                }
+            }
+        }
+        return count;
     }
 
     @Test
@@ -146,6 +188,18 @@ class DistributedRunOptionsTest {
         Finished port = runFor("--control-port", "4567");
         assertThat(port.exit).isEqualTo(2);
         assertThat(port.output).contains("--control-port: a distributed run registers its control object");
+        Finished address = runFor("--control-host", "127.0.0.2");
+        assertThat(address.exit).as(address.output).isEqualTo(2);
+        assertThat(address.output).contains("--control-host: a distributed run registers its control object");
+    }
+
+    @Test
+    void shouldPublishNoControlObjectWhenToldNot() throws Exception {
+        try (Running run = start("--no-control")) {
+            assertThat(run.output()).doesNotContain("control object");
+            assertThatThrownBy(() -> RemoteLiveNetwork.attach("options-test", naming).close())
+                    .as(run.output()).hasMessageContaining("options-test");
+        }
     }
 
     private record Finished(int exit, String output) {

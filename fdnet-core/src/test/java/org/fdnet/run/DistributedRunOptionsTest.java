@@ -194,6 +194,62 @@ class DistributedRunOptionsTest {
     }
 
     @Test
+    void shouldRefuseToListenOffLoopbackWithoutTls() throws Exception {
+        Finished open = runFor("--bind", "0.0.0.0");
+        assertThat(open.exit).as(open.output).isEqualTo(2);
+        assertThat(open.output).contains("0.0.0.0").contains("--tls");
+    }
+
+    @Test
+    void shouldLoadThisHostsNodeClassesOnlyFromAllowedFolders() throws Exception {
+        Path plugins = folder.resolve("plugins");
+        compileEmit(plugins, "10");
+        Path net = Files.createDirectories(folder.resolve("net"));
+        Path plugged = Files.writeString(net.resolve("plugged.fdn"), PLUGGED.replace("PLUGINS", plugins.toString()));
+
+        Finished refused = runFor(plugged);
+        assertThat(refused.exit).as(refused.output).isEqualTo(1);
+        assertThat(refused.output).contains("Emitter").contains("outside");
+
+        Finished allowed = runFor(plugged, "--allow-path", plugins.toString());
+        assertThat(allowed.exit).as(allowed.output).isZero();
+        assertThat(allowed.output).containsPattern("main/Out\\s+[\\d,]+\\s+10\\.0000");
+    }
+
+    /** Source on the flyer; Emitter, a class of a folder outside the file's, on this process's host. */
+    private static final String PLUGGED = """
+            <?xml version="1.0" encoding="UTF-8"?>
+            <cnet name="plugged">
+                <dstructure><name>Level</name><host>flyer</host><path></path>
+                    <class>org.fdnet.runtime.library.DoubleData</class></dstructure>
+                <pstructure><name>Source</name><host>flyer</host><path></path>
+                    <class>org.fdnet.runtime.library.Expression</class>
+                    <param name="period" type="long">50</param><param name="expression">1</param></pstructure>
+                <dstructure><name>Out</name><host>localhost</host><path></path>
+                    <class>org.fdnet.runtime.library.DoubleData</class></dstructure>
+                <pstructure><name>Emitter</name><host>localhost</host><path>PLUGINS</path>
+                    <class>plugin.Emit</class></pstructure>
+                <connection>
+                    <write><data>Level</data><proc>Source</proc></write>
+                    <read><data>Level</data><proc>Emitter</proc></read>
+                    <write><data>Out</data><proc>Emitter</proc></write>
+                </connection>
+            </cnet>
+            """;
+
+    /** {@code plugin.Emit}: a Relation that writes {@code constant} whenever it fires, compiled into {@code folder}. */
+    private static void compileEmit(Path folder, String constant) throws Exception {
+        Path src = Files.createDirectories(folder.resolve("src/plugin")).resolve("Emit.java");
+        Files.writeString(src, "package plugin;\n"
+                + "public class Emit extends org.fdnet.runtime.Relation {\n"
+                + "  protected void compute(org.fdnet.runtime.RelationContext c) {\n"
+                + "    c.outputAll(org.fdnet.runtime.Value.of(" + constant + ".0));\n  }\n}\n");
+        int rc = javax.tools.ToolProvider.getSystemJavaCompiler().run(null, null, null, "-d", folder.toString(),
+                "-cp", System.getProperty("java.class.path"), src.toString());
+        assertThat(rc).as("javac of plugin.Emit").isZero();
+    }
+
+    @Test
     void shouldPublishNoControlObjectWhenToldNot() throws Exception {
         try (Running run = start("--no-control")) {
             assertThat(run.output()).doesNotContain("control object");
@@ -207,9 +263,14 @@ class DistributedRunOptionsTest {
 
     /** Runs the network for 2 s with {@code options} and returns how it ended. */
     private static Finished runFor(String... options) throws InterruptedException {
+        return runFor(file, options);
+    }
+
+    /** Runs {@code network} for 2 s with {@code options} and returns how it ended. */
+    private static Finished runFor(Path network, String... options) throws InterruptedException {
         StringWriter text = new StringWriter();
         PrintWriter out = new PrintWriter(text, true);
-        int exit = networkRun(out, withBase("--for", "2s", options)).run();
+        int exit = networkRun(out, withBase(network, "--for", "2s", options)).run();
         return new Finished(exit, text.toString());
     }
 
@@ -229,7 +290,11 @@ class DistributedRunOptionsTest {
     }
 
     private static String[] withBase(String forOption, String duration, String... options) {
-        List<String> args = new ArrayList<>(List.of(file.toString(), "--naming", naming, forOption, duration));
+        return withBase(file, forOption, duration, options);
+    }
+
+    private static String[] withBase(Path network, String forOption, String duration, String... options) {
+        List<String> args = new ArrayList<>(List.of(network.toString(), "--naming", naming, forOption, duration));
         args.addAll(List.of(options));
         return args.toArray(String[]::new);
     }

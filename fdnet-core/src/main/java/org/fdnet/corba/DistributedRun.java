@@ -217,7 +217,8 @@ public final class DistributedRun implements AutoCloseable {
         Map<String, Integer> threads = deployment.workerThreads();
         List<String> parts = new ArrayList<>();
         for (String h : plan.hosts()) {
-            parts.add(h + " " + threads.get(h));
+            Integer n = threads.get(h);
+            parts.add(h + " " + (n == null || n == 0 ? "(its own)" : n));
         }
         return String.join(", ", parts);
     }

@@ -101,9 +101,12 @@ public interface LocalNetwork {
      * default when {@code workers} is 0; how many run now.
      *
      * @throws IllegalArgumentException when {@code workers} is below 0 or above this host's limit
-     * @throws UnsupportedOperationException when this engine cannot be sized
+     * @throws UnsupportedOperationException when this engine cannot be sized and {@code workers} is not 0
      */
     default int sizeEngine(int workers) {
+        if (workers == 0) {
+            return 0; // its own, whatever that is: an engine without a pool is not asked for one
+        }
         throw new UnsupportedOperationException("this host's engine (" + getClass().getSimpleName()
                 + ") has no worker threads to size");
     }

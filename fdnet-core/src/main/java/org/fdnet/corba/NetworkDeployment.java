@@ -173,7 +173,11 @@ public final class NetworkDeployment implements AutoCloseable {
         if (recording != null) {
             workerThreads.put(hostName, host.sizeEngine(recording.workers()));
             if (recording.traced()) {
-                host.traceRun(recording.run().id().toString(), recording.traceCapacity());
+                try {
+                    host.traceRun(recording.run().id().toString(), recording.traceCapacity());
+                } catch (Refused e) {
+                    LOG.warn("host {} is not traced: {}", hostName, e.reason); // the run goes on without its lines
+                }
             }
             long offset = ClockOffset.of(host);
             clockOffsets.put(hostName, offset);

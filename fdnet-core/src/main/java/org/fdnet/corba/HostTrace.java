@@ -14,20 +14,21 @@ import org.fdnet.netinfo.NodeRef;
  * A host's own events of one run, kept for {@code --trace} until the run's process takes them ({@code takeTrace}).
  *
  * <pre>
- *   engine thread ─accept─▶ [ring of capacity events] ─take(max), on an ORB thread─▶ lines with node names
- *                   full? drop and count ───────────────▶ "dropped" in the next batch
+ *   engine thread ─accept─▶ line (names, cut at MAX_LINE_CHARS) ─▶ [ring of capacity lines] ─take(max)─▶ batch
+ *                                          full? drop and count ─────────────────────────▶ "dropped" in the next batch
  * </pre>
  *
- * The engine never waits and memory stays bounded however slowly the trace is read: an event that finds the ring
- * full is dropped and counted, and the next batch says how many. Stand-ins' events are left out
- * ({@link StandInEvents}); the text is made when taken, off the engine's threads.
+ * The engine never waits and memory stays bounded however slowly the trace is read: a line that finds the ring full
+ * is dropped and counted, and the next batch says how many; a kept line is at most {@link #MAX_LINE_CHARS} long, so
+ * the ring holds at most capacity × that many characters whatever the values (an event keeps its whole value, which
+ * may be large: it is not kept). Stand-ins' events are left out ({@link StandInEvents}).
  */
 final class HostTrace implements EventSink {
     /** Longest text of one line: a large value (bytes, a long array) is cut here so a batch stays small. */
     static final int MAX_LINE_CHARS = 1_000;
 
     private final UUID run;
-    private final ArrayBlockingQueue<NetworkEvent> kept;
+    private final ArrayBlockingQueue<Line> kept;
     private final AtomicLong dropped = new AtomicLong();
     private final StandInEvents standIns;
     private final TraceText text = new TraceText();
@@ -56,21 +57,22 @@ final class HostTrace implements EventSink {
         if (standIns.test(event)) {
             return;
         }
-        text.learn(event); // names stay known even when the naming event itself is dropped
-        if (!kept.offer(event)) {
+        if (kept.remainingCapacity() == 0) { // spare the text of a line that cannot be kept
+            text.learn(event); // names stay known even when the naming event itself is dropped
+            dropped.incrementAndGet();
+            return;
+        }
+        String t = text.of(event);
+        if (!kept.offer(new Line(event.time(), t.length() > MAX_LINE_CHARS
+                ? t.substring(0, MAX_LINE_CHARS - 3) + "..." : t))) {
             dropped.incrementAndGet();
         }
     }
 
-    /** Up to {@code max} kept events as lines, oldest first; one taker at a time. */
+    /** Up to {@code max} kept lines, oldest first; one taker at a time. */
     synchronized Batch take(int max) {
-        List<NetworkEvent> events = new ArrayList<>(Math.min(max, kept.size()));
-        kept.drainTo(events, max);
-        List<Line> lines = new ArrayList<>(events.size());
-        for (NetworkEvent e : events) {
-            String t = text.of(e);
-            lines.add(new Line(e.time(), t.length() > MAX_LINE_CHARS ? t.substring(0, MAX_LINE_CHARS - 3) + "..." : t));
-        }
+        List<Line> lines = new ArrayList<>(Math.min(max, kept.size()));
+        kept.drainTo(lines, max);
         return new Batch(lines, dropped.getAndSet(0));
     }
 }

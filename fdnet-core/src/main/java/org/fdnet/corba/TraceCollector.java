@@ -27,7 +27,7 @@ import org.slf4j.LoggerFactory;
  * skipped; told the run again when it comes back, it traces again.
  */
 public final class TraceCollector implements AutoCloseable {
-    /** Events a host keeps for the trace at most: about 1 s of a very busy host, a few MB at most. */
+    /** Lines a host keeps for the trace at most (each at most {@link HostTrace#MAX_LINE_CHARS} characters). */
     public static final int HOST_CAPACITY = 10_000;
     static final int BATCH = 500;
     static final int ROUNDS_PER_HOST = 8;

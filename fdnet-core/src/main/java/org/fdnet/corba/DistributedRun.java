@@ -29,12 +29,14 @@ import org.fdnet.runtime.RuntimeOptions;
 public final class DistributedRun implements AutoCloseable {
     /**
      * What a distributed run needs: the network, where hosts register, this process's host name and engine
-     * options (worker threads, event sinks), who else hears host and link events ({@code events}), the logger the hosts record with ({@code null}: none but their own)
-     * and the logger's viewer address the control object tells attached tools.
+     * options (event sinks), who else hears host and link events ({@code events}), the logger the hosts record with
+     * ({@code null}: none but their own), the logger's viewer address the control object tells attached tools, the
+     * worker threads of every host's engine for this run (0: each host's own) and where every host's trace lines go
+     * ({@code null}: no trace).
      */
     public record Request(Path file, NetworkInfo definition, List<Path> allowedRoots, OrbSettings orbSettings,
                           String localHostName, RuntimeOptions localOptions, EventSink events, String loggerAddress,
-                          String loggerViewerAddress) {
+                          String loggerViewerAddress, int workers, TraceOutput trace) {
     }
 
     private final Request request;
@@ -43,15 +45,17 @@ public final class DistributedRun implements AutoCloseable {
     private final HostProcess local;
     private final NetworkDeployment deployment;
     private final DistributedControl control;
+    private final TraceCollector trace;
     private final long started;
 
     private DistributedRun(Request request, DeploymentPlan plan, RunIdentity run, HostProcess local,
-                           NetworkDeployment deployment, long started) {
+                           NetworkDeployment deployment, TraceCollector trace, long started) {
         this.request = request;
         this.plan = plan;
         this.run = run;
         this.local = local;
         this.deployment = deployment;
+        this.trace = trace;
         this.started = started;
         this.control = new DistributedControl(deployment);
         CoordinatorServant.publish(local.orb(), control); // every host's Servants now see the whole network
@@ -107,15 +111,18 @@ public final class DistributedRun implements AutoCloseable {
             deployment = NetworkDeployment.start(plan, HostDirectory.connect(local.orb()),
                     Map.of(request.localHostName(), local.reference()), new PrintingListener(out, started),
                     EventSink.both(request.events(), engine::record), LinkSettings.defaults().window(), 10_000, 250,
-                    new RunRecording(run, request.loggerAddress()));
+                    new RunRecording(run, request.loggerAddress(), request.workers(),
+                            request.trace() == null ? 0 : TraceCollector.HOST_CAPACITY));
         } catch (DeploymentException | HostUnreachableException e) {
             local.close();
             throw new DeploymentException("the network cannot be distributed: " + e.getMessage(), e);
         }
         out.printf("running on %d hosts: %s; %d cross-host links%n", plan.hosts().size(), shares(plan),
                 plan.links().size());
+        out.printf("worker threads for this run: %s%n", workerThreads(plan, deployment));
         out.flush();
-        return new DistributedRun(request, plan, run, local, deployment, started);
+        TraceCollector trace = request.trace() == null ? null : TraceCollector.start(deployment, request.trace());
+        return new DistributedRun(request, plan, run, local, deployment, trace, started);
     }
 
     /** Makes a run's identity once the hosts are known. */
@@ -176,6 +183,9 @@ public final class DistributedRun implements AutoCloseable {
         for (OutboundLink l : local.servant().outboundLinks()) {
             out.printf("  %s: %,d values acknowledged, %,d lost%n", l.description(), l.acknowledged(), l.lost());
         }
+        if (trace != null) {
+            out.println("  trace so far: " + trace.tally());
+        }
         out.flush();
     }
 
@@ -189,6 +199,9 @@ public final class DistributedRun implements AutoCloseable {
      * logger's commits) and stops this process's host; returns what the logger committed, by host.
      */
     public Map<String, String> stop() {
+        if (trace != null) {
+            trace.close(); // the last lines every host kept, then each host's trace ends
+        }
         deployment.close();
         local.close();
         return deployment.commitReports();
@@ -197,6 +210,17 @@ public final class DistributedRun implements AutoCloseable {
     @Override
     public void close() {
         stop();
+    }
+
+    /** {@code flyer 3, crawler 3, run-7668 2}: what each host said it runs, in the plan's order. */
+    private static String workerThreads(DeploymentPlan plan, NetworkDeployment deployment) {
+        Map<String, Integer> threads = deployment.workerThreads();
+        List<String> parts = new ArrayList<>();
+        for (String h : plan.hosts()) {
+            Integer n = threads.get(h);
+            parts.add(h + " " + (n == null || n == 0 ? "(its own)" : n));
+        }
+        return String.join(", ", parts);
     }
 
     private static String shares(DeploymentPlan plan) {

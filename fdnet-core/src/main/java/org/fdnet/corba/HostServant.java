@@ -17,6 +17,8 @@ import org.fdnet.corba.idl.NodeSpec;
 import org.fdnet.corba.idl.Refused;
 import org.fdnet.corba.idl.RunDescription;
 import org.fdnet.corba.idl.ShareChange;
+import org.fdnet.corba.idl.TraceBatch;
+import org.fdnet.corba.idl.TraceLine;
 import org.fdnet.corba.idl.UnknownLink;
 import org.fdnet.corba.idl.UnknownNode;
 import org.fdnet.corba.idl.Value;
@@ -137,6 +139,50 @@ public final class HostServant extends HostPOA implements AutoCloseable {
             return network.endRun(java.util.UUID.fromString(id)).orElse("");
         } catch (IllegalArgumentException e) {
             return "";
+        }
+    }
+
+    @Override
+    public int sizeEngine(int workers) throws Refused {
+        try {
+            return network.sizeEngine(workers);
+        } catch (IllegalArgumentException | IllegalStateException | UnsupportedOperationException e) {
+            LOG.warn("host {} refused to run {} worker threads: {}", hostName, workers, e.getMessage());
+            throw new Refused("host " + hostName + ": " + e.getMessage());
+        }
+    }
+
+    @Override
+    public void traceRun(String runId, int capacity) throws Refused {
+        try {
+            network.traceRun(java.util.UUID.fromString(runId), capacity);
+        } catch (IllegalArgumentException | UnsupportedOperationException e) {
+            throw new Refused("host " + hostName + " cannot trace run " + runId + ": " + e.getMessage());
+        }
+    }
+
+    @Override
+    public TraceBatch takeTrace(String runId, int max) {
+        HostTrace.Batch batch;
+        try {
+            batch = network.takeTrace(java.util.UUID.fromString(runId), Math.max(0, max));
+        } catch (IllegalArgumentException notARun) {
+            batch = HostTrace.Batch.EMPTY;
+        }
+        TraceLine[] lines = new TraceLine[batch.lines().size()];
+        for (int i = 0; i < lines.length; i++) {
+            HostTrace.Line l = batch.lines().get(i);
+            lines[i] = new TraceLine(l.timeMicros(), l.text());
+        }
+        return new TraceBatch(lines, batch.dropped());
+    }
+
+    @Override
+    public void endTrace(String runId) {
+        try {
+            network.endTrace(java.util.UUID.fromString(runId));
+        } catch (IllegalArgumentException notARun) {
+            LOG.debug("host {}: endTrace of {}, which is no run id", hostName, runId);
         }
     }
 

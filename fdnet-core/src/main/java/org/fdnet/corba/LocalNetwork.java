@@ -96,6 +96,42 @@ public interface LocalNetwork {
         return Optional.empty();
     }
 
+    /**
+     * Runs {@code workers} worker threads from now on (the run being deployed asked for them), or this host's own
+     * default when {@code workers} is 0; how many run now.
+     *
+     * @throws IllegalArgumentException when {@code workers} is below 0 or above this host's limit
+     * @throws UnsupportedOperationException when this engine cannot be sized and {@code workers} is not 0
+     */
+    default int sizeEngine(int workers) {
+        if (workers == 0) {
+            return 0; // its own, whatever that is: an engine without a pool is not asked for one
+        }
+        throw new UnsupportedOperationException("this host's engine (" + getClass().getSimpleName()
+                + ") has no worker threads to size");
+    }
+
+    /**
+     * Keeps up to {@code capacity} of this host's own events of {@code run} for {@link #takeTrace}; a trace of another
+     * run ends.
+     *
+     * @throws IllegalArgumentException when {@code capacity} is out of range
+     * @throws UnsupportedOperationException when this engine has no events to trace
+     */
+    default void traceRun(UUID run, int capacity) {
+        throw new UnsupportedOperationException("this host's engine (" + getClass().getSimpleName()
+                + ") has no events to trace");
+    }
+
+    /** At most {@code max} kept events of {@code run}, oldest first; empty when this host does not trace it. */
+    default HostTrace.Batch takeTrace(UUID run, int max) {
+        return HostTrace.Batch.EMPTY;
+    }
+
+    /** Stops keeping events of {@code run}. */
+    default void endTrace(UUID run) {
+    }
+
     /** {@code ref} is about to be declared as a stand-in (a shadow of a Data homed on another host). */
     default void expectStandIn(NodeRef ref) {
     }

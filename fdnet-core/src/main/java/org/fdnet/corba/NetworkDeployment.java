@@ -62,6 +62,8 @@ public final class NetworkDeployment implements AutoCloseable {
 
     private RunRecording recording; // set once, before the first share is deployed
     private final Map<String, String> commitReports = new ConcurrentHashMap<>();
+    private final Map<String, Integer> workerThreads = new ConcurrentHashMap<>();
+    private final Map<String, Long> clockOffsets = new ConcurrentHashMap<>();
     private volatile NetworkCoordinator coordinator;
     /** Held by every change of the running network and while a lost host's share is re-created. */
     private final ReentrantLock changes = new ReentrantLock();
@@ -163,11 +165,25 @@ public final class NetworkDeployment implements AutoCloseable {
         }
     }
 
-    /** Tells a host of this network the logger to record with and the coordinator its Servants ask. */
+    /**
+     * Tells a host of this network about the run — its engine's worker threads, whether it keeps its events for the
+     * trace, the logger to record with — and the coordinator its Servants ask.
+     */
     private void welcome(String hostName, Host host) throws Refused {
-        if (recording != null && host.recordRun(recording.loggerAddress(), IdlMapping.description(recording.run()),
-                ClockOffset.of(host))) {
-            LOG.info("host {} records its part of run {}", hostName, recording.run().id());
+        if (recording != null) {
+            workerThreads.put(hostName, host.sizeEngine(recording.workers()));
+            if (recording.traced()) {
+                try {
+                    host.traceRun(recording.run().id().toString(), recording.traceCapacity());
+                } catch (Refused e) {
+                    LOG.warn("host {} is not traced: {}", hostName, e.reason); // the run goes on without its lines
+                }
+            }
+            long offset = ClockOffset.of(host);
+            clockOffsets.put(hostName, offset);
+            if (host.recordRun(recording.loggerAddress(), IdlMapping.description(recording.run()), offset)) {
+                LOG.info("host {} records its part of run {}", hostName, recording.run().id());
+            }
         }
         NetworkCoordinator c = coordinator;
         if (c != null) {
@@ -402,6 +418,21 @@ public final class NetworkDeployment implements AutoCloseable {
     /** The last re-wiring time of each recovered host, in milliseconds. */
     public Map<String, Long> recoveryMillis() {
         return Map.copyOf(recoveryMillis);
+    }
+
+    /** The worker threads each host's engine runs for this run, as each said when it was told (empty without a run). */
+    public Map<String, Integer> workerThreads() {
+        return Map.copyOf(workerThreads);
+    }
+
+    /** How far {@code host}'s clock is ahead of this process's, in µs, as measured when it was told the run; 0 unknown. */
+    public long clockOffsetMicros(String host) {
+        return clockOffsets.getOrDefault(host, 0L);
+    }
+
+    /** The run every host was told about, if any. */
+    public Optional<RunRecording> recording() {
+        return Optional.ofNullable(recording);
     }
 
     /** The current reference of a host of the plan. */

@@ -56,11 +56,18 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
     private String ownLogger; // guarded by this
     private volatile HostRecording recording; // changed under this
     private volatile Consumer<String> runEnded = report -> { };
+    private volatile HostTrace trace; // changed under this
+    private final int ownWorkers; // fdnet host --workers, else one per core: a run that names none gets these
+
+    /** The most worker threads a run may ask a host for; the most events a host keeps for a run's trace. */
+    public static final int MAX_WORKERS = 256;
+    static final int MAX_TRACE_CAPACITY = 1_000_000;
 
     private RuntimeLocalNetwork(String hostName, RuntimeNetwork runtime) {
         this.hostName = hostName;
         this.runtime = runtime;
         this.controller = runtime.controller();
+        this.ownWorkers = runtime.workerThreads();
     }
 
     /** Starts an empty engine whose local nodes are those placed on {@code hostName}. */
@@ -122,6 +129,51 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
         LOG.info("host {}: {} run {}: {}", hostName, ending.run().network(), run, report);
         runEnded.accept(report);
         return Optional.of(report);
+    }
+
+    @Override
+    public synchronized int sizeEngine(int workers) {
+        if (workers < 0 || workers > MAX_WORKERS) {
+            throw new IllegalArgumentException("--workers " + workers + ": host " + hostName + " runs 1 to "
+                    + MAX_WORKERS + " worker threads");
+        }
+        int threads = workers == 0 ? ownWorkers : workers;
+        if (threads != runtime.workerThreads()) {
+            runtime.resizeWorkers(threads);
+            LOG.info("host {} runs {} worker threads", hostName, threads);
+        }
+        return runtime.workerThreads();
+    }
+
+    @Override
+    public synchronized void traceRun(UUID run, int capacity) {
+        if (capacity < 1 || capacity > MAX_TRACE_CAPACITY) {
+            throw new IllegalArgumentException("a trace keeps 1 to " + MAX_TRACE_CAPACITY + " events, not "
+                    + capacity);
+        }
+        if (trace != null) {
+            if (trace.run().equals(run)) {
+                return; // told again (a structural change brought this host in again): keep what is kept
+            }
+            runtime.removeSink(trace);
+        }
+        trace = new HostTrace(run, capacity, standIns::contains);
+        runtime.addSink(trace);
+        LOG.info("host {} keeps up to {} of its events of run {} for the run's trace", hostName, capacity, run);
+    }
+
+    @Override
+    public HostTrace.Batch takeTrace(UUID run, int max) {
+        HostTrace t = trace;
+        return t == null || !t.run().equals(run) ? HostTrace.Batch.EMPTY : t.take(max);
+    }
+
+    @Override
+    public synchronized void endTrace(UUID run) {
+        if (trace != null && trace.run().equals(run)) {
+            runtime.removeSink(trace);
+            trace = null;
+        }
     }
 
     /** Told what the logger committed each time a run's recording ends here (fdnet host prints it). */

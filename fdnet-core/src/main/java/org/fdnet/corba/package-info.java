@@ -47,6 +47,13 @@
  * Logging: every host records its engine's events, less its stand-ins', as its part of the one network run
  * the coordinator hands over at deployment ({@code recordRun}: {@code RunIdentity} + logger address, or the host's
  * own {@code fdnet host --logger}), through a {@link org.fdnet.corba.HostRecording} of its own; {@code endRun} at
- * the end commits it. The run's life around a deployment is {@code org.fdnet.run}'s.
+ * the end commits it. At deployment each host is also sized for the run ({@code sizeEngine}: the run's
+ * {@code --workers}, else the host's own count) and, for {@code --trace}, told to keep its own events in a bounded
+ * {@link org.fdnet.corba.HostTrace}, which the run's {@link org.fdnet.corba.TraceCollector} drains (pulled, so a slow
+ * tracer costs dropped-and-counted lines, never a host's progress or memory):
+ * <pre>
+ *   host engine ─▶ HostTrace [≤ capacity; full: drop, count] ◀─takeTrace─ TraceCollector (fdnet run) ─▶ TraceOutput
+ * </pre>
+ * The run's life around a deployment is {@code org.fdnet.run}'s.
  */
 package org.fdnet.corba;

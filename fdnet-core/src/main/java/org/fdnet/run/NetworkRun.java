@@ -13,6 +13,8 @@ import org.fdnet.control.ControlledLiveNetwork;
 import org.fdnet.control.LiveNetwork;
 import org.fdnet.corba.DeploymentException;
 import org.fdnet.corba.DistributedRun;
+import org.fdnet.corba.RuntimeLocalNetwork;
+import org.fdnet.corba.TraceCollector;
 import org.fdnet.corba.control.ControlPublication;
 import org.fdnet.event.EventSink;
 import org.fdnet.event.RunIdentity;
@@ -122,17 +124,24 @@ public final class NetworkRun {
         }
         EventCounter counter = new EventCounter();
         RuntimeOptions engine = RuntimeOptions.defaults().sink(counter);
-        if (options.workers != null) {
-            engine.workerThreads(options.workers); // one host only: refused above for a distributed run
-        }
-        TracePrinter trace = options.trace ? new TracePrinter(out, System.currentTimeMillis() * 1000) : null;
-        if (trace != null) {
-            engine.sink(trace);
-        }
+        boolean distributed = options.distribution.appliesTo(definition);
+        // in a distributed run every host traces its own events, this one too; here only host and link events
+        TracePrinter trace = options.trace ? new TracePrinter(out, System.currentTimeMillis() * 1000,
+                distributed ? options.distribution.localHostName() : null) : null;
         long started = System.nanoTime();
-        RunTarget target = options.distribution.appliesTo(definition)
-                ? startDistributed(definition, engine, trace == null ? counter : EventSink.both(counter, trace))
-                : startLocal(definition, engine);
+        RunTarget target;
+        if (distributed) {
+            target = startDistributed(definition, engine, trace == null ? counter : EventSink.both(counter, trace),
+                    trace);
+        } else {
+            if (options.workers != null) {
+                engine.workerThreads(options.workers);
+            }
+            if (trace != null) {
+                engine.sink(trace);
+            }
+            target = startLocal(definition, engine);
+        }
         if (target == null) {
             return notStarted;
         }
@@ -202,16 +211,15 @@ public final class NetworkRun {
                 return "--logger " + options.logger + ": " + e.getMessage();
             }
         }
+        if (options.workers != null && (options.workers < 1 || options.workers > RuntimeLocalNetwork.MAX_WORKERS)) {
+            return "--workers " + options.workers + ": a network's engine runs 1 to " + RuntimeLocalNetwork.MAX_WORKERS
+                    + " worker threads";
+        }
         if (!options.distribution.appliesTo(definition)) {
             return null;
         }
         if (options.simCourse != null) {
             return "--sim runs the network on this machine only; it does not combine with a distributed run";
-        }
-        if (options.workers != null) {
-            return "--workers " + options.workers + ": sizes one engine, and a distributed run spans engines that"
-                    + " started before it (every fdnet host's serves each network deployed there); size each where"
-                    + " it starts: fdnet host --name HOST --workers N";
         }
         String placed = options.control.placement();
         if (placed != null) {
@@ -273,21 +281,22 @@ public final class NetworkRun {
         }
     }
 
-    private RunTarget startDistributed(NetworkInfo definition, RuntimeOptions engine,
-                                       EventSink hostAndLinkEvents) {
+    private RunTarget startDistributed(NetworkInfo definition, RuntimeOptions engine, EventSink hostAndLinkEvents,
+                                       TracePrinter trace) {
         String network = publishedName(definition, file);
         if (options.logger != null) {
             out.printf("every host records its part of the run with the logger at %s%n", options.logger);
         }
-        if (options.trace) {
-            out.printf("--trace: this process's host %s (its nodes, its stand-ins of other hosts' Datas as values"
-                    + " arrive) and every host and link event; the other hosts' own events stay there (record them"
-                    + " with --logger, see them in fdnet viewer)%n", options.distribution.localHostName());
+        if (trace != null) {
+            out.printf("--trace: every host's own events (a stand-in's are its Data's home host's), each line naming"
+                    + " its host; a host keeps at most %,d lines this process has not read yet and drops the rest,"
+                    + " counted%n", TraceCollector.HOST_CAPACITY);
         }
         try {
             DistributedRun run = DistributedRun.start(new DistributedRun.Request(file, definition,
                     options.allowedRoots, options.distribution.orbSettings(), options.distribution.localHostName(),
-                    engine, hostAndLinkEvents, options.logger, options.loggerViewer),
+                    engine, hostAndLinkEvents, options.logger, options.loggerViewer,
+                    options.workers == null ? 0 : options.workers, trace),
                     (text, hosts) -> RunIdentity.start(network, text, hosts), out);
             identity = run.run();
             out.printf("run %s of %s started; this process's host runs %d worker threads%n", identity.id(), network,

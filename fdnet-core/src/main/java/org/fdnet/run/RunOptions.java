@@ -39,13 +39,13 @@ public final class RunOptions {
     String simCourse;
 
     @Option(names = "--workers", paramLabel = "N",
-            description = "worker threads of the network's engine (default: one per core); refused in a distributed"
-                    + " run: each fdnet host's engine is sized where it starts (fdnet host --workers N)")
+            description = "worker threads of the network's engine (default: one per core); in a distributed run,"
+                    + " of every host's engine for this run (default: each host's own, fdnet host --workers N)")
     Integer workers;
 
-    @Option(names = "--trace", description = "print every event of this process's engine as it happens (in a"
-            + " distributed run it says so: this process's host only, with its stand-ins of the others' Datas,"
-            + " and every host and link event; record the other hosts with --logger)")
+    @Option(names = "--trace", description = "print every event as it happens; in a distributed run every host's"
+            + " own events, each line naming its host (a host that cannot be read fast enough drops lines and the"
+            + " run says how many; --logger keeps every event)")
     boolean trace;
 
     @Option(names = "--logger", paramLabel = "HOST:PORT",

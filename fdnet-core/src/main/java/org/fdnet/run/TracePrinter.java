@@ -1,51 +1,53 @@
 package org.fdnet.run;
 
 import java.io.PrintWriter;
-import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
-import org.fdnet.event.DataValueEvent;
+import java.util.Locale;
+import org.fdnet.corba.TraceOutput;
+import org.fdnet.corba.TraceText;
 import org.fdnet.event.EventSink;
-import org.fdnet.event.NetworkCommandEvent;
 import org.fdnet.event.NetworkEvent;
-import org.fdnet.event.NodeNamedEvent;
-import org.fdnet.event.RelationValueEvent;
-import org.fdnet.netinfo.NodeRef;
 
-/** {@code fdnet run --trace}: prints every event as it happens, with node names instead of ids. */
-final class TracePrinter implements EventSink {
+/**
+ * {@code fdnet run --trace}: prints every event as it happens, with node names instead of ids. On one host it is a
+ * sink of the engine; in a distributed run it prints the lines every host's trace hands over ({@link TraceOutput}),
+ * each naming its host, and the deployment's host and link events as this process's host's.
+ */
+final class TracePrinter implements EventSink, TraceOutput {
     private final PrintWriter out;
-    private final Map<Integer, NodeRef> names = new ConcurrentHashMap<>();
+    private final TraceText text = new TraceText();
     private final long start;
+    private final String host;
 
-    TracePrinter(PrintWriter out, long startMicros) {
+    /** {@code host}: the name this process's own events are printed under; {@code null} on one host (no names). */
+    TracePrinter(PrintWriter out, long startMicros, String host) {
         this.out = out;
         this.start = startMicros;
+        this.host = host;
     }
 
     @Override
     public void accept(NetworkEvent event) {
-        String when = String.format(java.util.Locale.ROOT, "%10.6f", (event.time() - start) / 1e6);
-        String line;
-        if (event instanceof NodeNamedEvent n) {
-            names.put(n.sourceId(), n.name());
-            line = "named    #" + n.sourceId() + " " + n.kind().label() + " " + n.name();
-        } else if (event instanceof DataValueEvent v) {
-            line = "value    " + name(v.sourceId()) + " = " + v.value();
-        } else if (event instanceof RelationValueEvent r) {
-            line = "relation " + name(r.sourceId()) + " " + r.value();
-        } else {
-            NetworkCommandEvent c = (NetworkCommandEvent) event;
-            line = "command  " + c.command().text() + " " + c.paramsType() + " " + c.paramsId()
-                    + " by " + (c.sourceId() == 0 ? "controller" : name(c.sourceId()));
-        }
+        print(host, event.time(), text.of(event));
+    }
+
+    @Override
+    public void line(String host, long timeMicros, String line) {
+        print(host, timeMicros, line);
+    }
+
+    @Override
+    public void dropped(String host, long count) {
         synchronized (out) {
-            out.println("trace " + when + " " + line);
+            out.printf(Locale.ROOT, "trace: %,d trace lines dropped on host %s (its trace buffer was full: this"
+                    + " process read it too slowly; the logger keeps every event)%n", count, host);
         }
     }
 
-    private String name(int id) {
-        NodeRef ref = names.get(id);
-        return ref == null ? "#" + id : ref.toString();
+    private void print(String host, long timeMicros, String line) {
+        String when = String.format(Locale.ROOT, "%10.6f", (timeMicros - start) / 1e6);
+        synchronized (out) {
+            out.println("trace " + when + " " + (host == null ? "" : host + " ") + line);
+        }
     }
 
     @Override

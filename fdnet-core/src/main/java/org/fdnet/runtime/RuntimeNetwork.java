@@ -220,6 +220,17 @@ public final class RuntimeNetwork implements AutoCloseable {
         return scheduler.threads();
     }
 
+    /**
+     * Runs {@code threads} worker threads from now on (a host's engine sized for the run deployed on it): the
+     * missing ones start at once, extra ones stop after the Relations they are running.
+     *
+     * @throws IllegalArgumentException when {@code threads} is below 1
+     * @throws IllegalStateException on a driven clock (no worker threads)
+     */
+    public void resizeWorkers(int threads) {
+        scheduler.resize(threads);
+    }
+
     // ------------------------------------------------------------------ change requests
 
     record NetworkCommandDraft(NetworkCommand command, String module) {

@@ -1,6 +1,8 @@
 package org.fdnet.runtime;
 
 import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -19,6 +21,10 @@ import org.slf4j.LoggerFactory;
  *                ├─ caller may run inline ────▶ local queue, drain now
  *                └─ else ─────────────────────▶ pool queue ──▶ worker drains it the same way
  * </pre>
+ *
+ * The pool can be {@linkplain #resize resized} while it runs (a host's engine serves each network deployed there in
+ * turn, each run with its own worker count): new workers start at once; a retired worker finishes the drain it is
+ * in and stops within one poll of the pool queue.
  */
 final class Scheduler implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(Scheduler.class);
@@ -26,12 +32,20 @@ final class Scheduler implements AutoCloseable {
 
     private final Dataflow flow;
     private final LinkedBlockingQueue<RelationNode> pool = new LinkedBlockingQueue<>();
-    private final Thread[] workers;
+    private final List<Worker> workers = new ArrayList<>(); // guarded by this
+    private int workersStarted; // guarded by this: numbers the workers' threads
+    private final boolean driven;
     private final AtomicInteger idle = new AtomicInteger();
     private final ThreadLocal<LocalRun> local = ThreadLocal.withInitial(LocalRun::new);
     private final int budget;
     private final boolean inlineCallers;
     private volatile boolean running = true;
+
+    /** One worker thread; {@code retired} asks it to stop after the drain it is in. */
+    private static final class Worker {
+        Thread thread;
+        volatile boolean retired;
+    }
 
     private static final class LocalRun {
         final ArrayDeque<RelationNode> queue = new ArrayDeque<>();
@@ -42,14 +56,35 @@ final class Scheduler implements AutoCloseable {
         this.flow = flow;
         this.budget = budget;
         this.inlineCallers = inlineCallers;
-        this.workers = new Thread[threads];
-        for (int i = 0; i < threads; i++) {
-            Thread t = new Thread(this::work, "fdnet-worker-" + i);
-            t.setDaemon(true);
-            workers[i] = t;
+        this.driven = threads == 0;
+        if (!driven) {
+            resize(threads);
         }
-        for (Thread t : workers) {
-            t.start();
+    }
+
+    /**
+     * Runs {@code threads} workers from now on: starts the missing ones, retires the extra ones.
+     *
+     * @throws IllegalArgumentException when {@code threads} is below 1
+     * @throws IllegalStateException for a driven network's pool, which has no workers
+     */
+    synchronized void resize(int threads) {
+        if (threads < 1) {
+            throw new IllegalArgumentException("worker threads must be at least 1, was " + threads);
+        }
+        if (driven) {
+            throw new IllegalStateException("a network on a driven clock runs every firing on its driver's thread;"
+                    + " it has no worker threads to size");
+        }
+        while (running && workers.size() < threads) {
+            Worker w = new Worker();
+            w.thread = new Thread(() -> work(w), "fdnet-worker-" + workersStarted++);
+            w.thread.setDaemon(true);
+            workers.add(w);
+            w.thread.start();
+        }
+        while (workers.size() > threads) {
+            workers.remove(workers.size() - 1).retired = true;
         }
     }
 
@@ -97,10 +132,10 @@ final class Scheduler implements AutoCloseable {
         }
     }
 
-    private void work() {
+    private void work(Worker self) {
         LocalRun l = local.get();
         idle.incrementAndGet();
-        while (running) {
+        while (running && !self.retired) {
             RelationNode r;
             try {
                 r = pool.poll(50, TimeUnit.MILLISECONDS);
@@ -121,6 +156,7 @@ final class Scheduler implements AutoCloseable {
                 idle.incrementAndGet();
             }
         }
+        idle.decrementAndGet();
     }
 
     /**
@@ -139,17 +175,21 @@ final class Scheduler implements AutoCloseable {
         return taken;
     }
 
-    int threads() {
-        return workers.length;
+    synchronized int threads() {
+        return workers.size();
     }
 
     @Override
     public void close() {
-        running = false;
-        for (Thread t : workers) {
+        List<Thread> threads;
+        synchronized (this) {
+            running = false;
+            threads = workers.stream().map(w -> w.thread).toList();
+        }
+        for (Thread t : threads) {
             t.interrupt();
         }
-        for (Thread t : workers) {
+        for (Thread t : threads) {
             try {
                 t.join(2000);
             } catch (InterruptedException e) {

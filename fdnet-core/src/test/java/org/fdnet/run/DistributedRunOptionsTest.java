@@ -1,6 +1,7 @@
 package org.fdnet.run;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
@@ -108,26 +109,67 @@ class DistributedRunOptionsTest {
     }
 
     @Test
-    void shouldTraceThisProcessesHostAndSaySoForTheOtherHosts() throws Exception {
-        Finished run = runFor("--trace");
+    void shouldTraceEveryHostsOwnEventsEachLineNamingItsHost() throws Exception {
+        Finished run = runFor("--as", "station", "--trace");
         assertThat(run.exit).as(run.output).isZero();
-        // what --trace can show here, said before it shows it: the flyer's own events stay on the flyer
-        assertThat(run.output).containsPattern("--trace: this process's host \\S+ \\(its nodes")
-                .contains("the other hosts' own events stay there (record them with --logger");
-        // this process's share: the Operator and its stand-ins of the flyer's Datas, as they are made and run
-        assertThat(run.output).containsPattern("trace +[\\d.]+ named +#\\d+ Data main/Level")
-                .containsPattern("trace +[\\d.]+ relation main/Operator RUNNING");
+        assertThat(run.output).contains("--trace: every host's own events");
+        // the flyer's own events, read from the flyer: its nodes named, its Source running and writing Level
+        assertThat(run.output).as(run.output)
+                .containsPattern("trace +[\\d.]+ flyer named +#\\d+ Data main/Level")
+                .containsPattern("trace +[\\d.]+ flyer relation main/Source RUNNING")
+                .containsPattern("trace +[\\d.]+ flyer value +main/Level = 1\\.0");
+        // this process's host's own: the Operator; its stand-in of Level is the flyer's Data, traced there only
+        assertThat(run.output)
+                .containsPattern("trace +[\\d.]+ station relation main/Operator RUNNING")
+                .doesNotContainPattern("trace +[\\d.]+ station named +#\\d+ Data main/Level")
+                .doesNotContain("trace lines dropped");
+        assertThat(run.output).containsPattern("trace so far: .*flyer [\\d,]+ lines \\(0 dropped\\)");
     }
 
     @Test
-    void shouldRefuseWorkersByNameAndSizeEachHostWhereItStarts() throws Exception {
-        Finished run = runFor("--workers", "3");
-        assertThat(run.exit).as(run.output).isEqualTo(2);
-        assertThat(run.output).contains("--workers 3: sizes one engine")
-                .contains("fdnet host --name HOST --workers N");
-        // the flyer was started with --workers 2 and says so; the other tests' runs deploy onto it
-        assertThat(flyer.output()).anyMatch(line -> line.contains("fdnet host flyer ready")
-                && line.contains("2 worker threads"));
+    void shouldSizeEveryHostsEngineForTheRunAndLeaveTheHostsOwnCountToARunWithoutWorkers() throws Exception {
+        try (Running run = start("--as", "station", "--workers", "3")) {
+            assertThat(run.output()).as(run.output()).containsPattern("worker threads for this run: .*flyer 3")
+                    .containsPattern("worker threads for this run: .*station 3");
+            // the flyer's engine really runs 3 worker threads for this run (its own count is 2)
+            assertThat(awaitWorkerThreads(flyer.pid(), 3)).isEqualTo(3);
+        }
+        try (Running run = start("--as", "station")) {
+            assertThat(run.output()).as(run.output()).containsPattern("worker threads for this run: .*flyer 2");
+            assertThat(awaitWorkerThreads(flyer.pid(), 2)).isEqualTo(2);
+        }
+        Finished none = runFor("--workers", "0");
+        assertThat(none.exit).isEqualTo(2);
+        assertThat(none.output).contains("--workers 0: a network's engine runs 1 to 256 worker threads");
+    }
+
+    /**
+     * The worker threads process {@code pid} runs, counted by their names in {@code /proc/PID/task/&#42;/comm} (Linux),
+     * once they equal {@code expected} or after 10 s: a retired worker stops after its current poll.
+     */
+    private static int awaitWorkerThreads(long pid, int expected) throws Exception {
+        long deadline = System.currentTimeMillis() + 10_000;
+        int count;
+        while ((count = workerThreadsOf(pid)) != expected && System.currentTimeMillis() < deadline) {
+            Thread.sleep(50);
+        }
+        return count;
+    }
+
+    private static int workerThreadsOf(long pid) throws java.io.IOException {
+        int count = 0;
+        try (java.util.stream.Stream<Path> tasks = Files.list(Path.of("/proc", Long.toString(pid), "task"))) {
+            for (Path task : (Iterable<Path>) tasks::iterator) {
+                try {
+                    if (Files.readString(task.resolve("comm")).startsWith("fdnet-worker-")) {
+                        count++;
+                    }
+                } catch (java.nio.file.NoSuchFileException ended) {
+                    // the thread ended while it was being listed
+                }
+            }
+        }
+        return count;
     }
 
     @Test
@@ -146,6 +188,74 @@ class DistributedRunOptionsTest {
         Finished port = runFor("--control-port", "4567");
         assertThat(port.exit).isEqualTo(2);
         assertThat(port.output).contains("--control-port: a distributed run registers its control object");
+        Finished address = runFor("--control-host", "127.0.0.2");
+        assertThat(address.exit).as(address.output).isEqualTo(2);
+        assertThat(address.output).contains("--control-host: a distributed run registers its control object");
+    }
+
+    @Test
+    void shouldRefuseToListenOffLoopbackWithoutTls() throws Exception {
+        Finished open = runFor("--bind", "0.0.0.0");
+        assertThat(open.exit).as(open.output).isEqualTo(2);
+        assertThat(open.output).contains("0.0.0.0").contains("--tls");
+    }
+
+    @Test
+    void shouldLoadThisHostsNodeClassesOnlyFromAllowedFolders() throws Exception {
+        Path plugins = folder.resolve("plugins");
+        compileEmit(plugins, "10");
+        Path net = Files.createDirectories(folder.resolve("net"));
+        Path plugged = Files.writeString(net.resolve("plugged.fdn"), PLUGGED.replace("PLUGINS", plugins.toString()));
+
+        Finished refused = runFor(plugged);
+        assertThat(refused.exit).as(refused.output).isEqualTo(1);
+        assertThat(refused.output).contains("Emitter").contains("outside");
+
+        Finished allowed = runFor(plugged, "--allow-path", plugins.toString());
+        assertThat(allowed.exit).as(allowed.output).isZero();
+        assertThat(allowed.output).containsPattern("main/Out\\s+[\\d,]+\\s+10\\.0000");
+    }
+
+    /** Source on the flyer; Emitter, a class of a folder outside the file's, on this process's host. */
+    private static final String PLUGGED = """
+            <?xml version="1.0" encoding="UTF-8"?>
+            <cnet name="plugged">
+                <dstructure><name>Level</name><host>flyer</host><path></path>
+                    <class>org.fdnet.runtime.library.DoubleData</class></dstructure>
+                <pstructure><name>Source</name><host>flyer</host><path></path>
+                    <class>org.fdnet.runtime.library.Expression</class>
+                    <param name="period" type="long">50</param><param name="expression">1</param></pstructure>
+                <dstructure><name>Out</name><host>localhost</host><path></path>
+                    <class>org.fdnet.runtime.library.DoubleData</class></dstructure>
+                <pstructure><name>Emitter</name><host>localhost</host><path>PLUGINS</path>
+                    <class>plugin.Emit</class></pstructure>
+                <connection>
+                    <write><data>Level</data><proc>Source</proc></write>
+                    <read><data>Level</data><proc>Emitter</proc></read>
+                    <write><data>Out</data><proc>Emitter</proc></write>
+                </connection>
+            </cnet>
+            """;
+
+    /** {@code plugin.Emit}: a Relation that writes {@code constant} whenever it fires, compiled into {@code folder}. */
+    private static void compileEmit(Path folder, String constant) throws Exception {
+        Path src = Files.createDirectories(folder.resolve("src/plugin")).resolve("Emit.java");
+        Files.writeString(src, "package plugin;\n"
+                + "public class Emit extends org.fdnet.runtime.Relation {\n"
+                + "  protected void compute(org.fdnet.runtime.RelationContext c) {\n"
+                + "    c.outputAll(org.fdnet.runtime.Value.of(" + constant + ".0));\n  }\n}\n");
+        int rc = javax.tools.ToolProvider.getSystemJavaCompiler().run(null, null, null, "-d", folder.toString(),
+                "-cp", System.getProperty("java.class.path"), src.toString());
+        assertThat(rc).as("javac of plugin.Emit").isZero();
+    }
+
+    @Test
+    void shouldPublishNoControlObjectWhenToldNot() throws Exception {
+        try (Running run = start("--no-control")) {
+            assertThat(run.output()).doesNotContain("control object");
+            assertThatThrownBy(() -> RemoteLiveNetwork.attach("options-test", naming).close())
+                    .as(run.output()).hasMessageContaining("options-test");
+        }
     }
 
     private record Finished(int exit, String output) {
@@ -153,9 +263,14 @@ class DistributedRunOptionsTest {
 
     /** Runs the network for 2 s with {@code options} and returns how it ended. */
     private static Finished runFor(String... options) throws InterruptedException {
+        return runFor(file, options);
+    }
+
+    /** Runs {@code network} for 2 s with {@code options} and returns how it ended. */
+    private static Finished runFor(Path network, String... options) throws InterruptedException {
         StringWriter text = new StringWriter();
         PrintWriter out = new PrintWriter(text, true);
-        int exit = networkRun(out, withBase("--for", "2s", options)).run();
+        int exit = networkRun(out, withBase(network, "--for", "2s", options)).run();
         return new Finished(exit, text.toString());
     }
 
@@ -175,7 +290,11 @@ class DistributedRunOptionsTest {
     }
 
     private static String[] withBase(String forOption, String duration, String... options) {
-        List<String> args = new ArrayList<>(List.of(file.toString(), "--naming", naming, forOption, duration));
+        return withBase(file, forOption, duration, options);
+    }
+
+    private static String[] withBase(Path network, String forOption, String duration, String... options) {
+        List<String> args = new ArrayList<>(List.of(network.toString(), "--naming", naming, forOption, duration));
         args.addAll(List.of(options));
         return args.toArray(String[]::new);
     }

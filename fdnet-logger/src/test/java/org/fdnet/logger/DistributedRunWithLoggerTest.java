@@ -93,8 +93,12 @@ class DistributedRunWithLoggerTest {
     /**
      * Issue #20's count: one network run in the database, its three hosts as three streams filed under it, each
      * Data once (on its home host; no stand-in of it anywhere), every stream's rows exactly what its host says the
-     * logger committed, and the flyer's Map — made to grow with time through {@code --param} — stored once per
-     * value, in order.
+     * logger committed, and every Data's values stored once each, in the order its home host wrote them. To make
+     * that order checkable each value must say where it stands, so {@code --param} gives the three Relations
+     * expressions of the flyer's clock: Survey writes Map = [t, t+1, t+2, t+3] (t: the flyer engine's seconds),
+     * ChooseSector writes Heading = 1000 + Map[0] (rising) and Confidence writes Certainty = 1000 - Map[0] (falling)
+     * for every such Map; a value from before the parameters took effect (the file's expressions; -1 from the new
+     * ones on an old Map) is told apart by its shape and left out of the order, not out of the count.
      */
     @Test
     void shouldStoreOneRunWithEveryValueOnceInOrderAndNoStandIns() throws Exception {
@@ -111,7 +115,10 @@ class DistributedRunWithLoggerTest {
                     "fdnet host crawler ready");
             FdnetChildProcess run = start("run two-robots", List.of("run", "../networks/two-robots.fdn", "--naming",
                     naming, "--as", "operator-station", "--for", "6s", "--logger", loggerAddress,
-                    "--param", "Survey:expression=[t, t + 1, t + 2, t + 3]"), "running on 3 hosts");
+                    "--param", "Survey:expression=[t, t + 1, t + 2, t + 3]",
+                    "--param", "ChooseSector:expression=Map[3] - Map[0] > 2.5 ? 1000 + Map[0] : -1",
+                    "--param", "Confidence:expression=Map[3] - Map[0] > 2.5 ? 1000 - Map[0] : -1"),
+                    "running on 3 hosts");
             assertThat(run.awaitExit(120_000)).as(String.join("\n", run.output())).isZero();
             String runId = run.output().stream().map(RUN_STARTED::matcher).filter(Matcher::find)
                     .map(m -> m.group(1)).findFirst().orElseThrow();
@@ -128,9 +135,10 @@ class DistributedRunWithLoggerTest {
                     .isEqualTo("crawler,flyer,operator-station");
             // The coordinator measured each host's clock: one machine, so every offset is far below a second.
             assertThat(database.fixture().count("SELECT max(abs(r.clock_offset))" + streams)).isLessThan(1_000_000);
-            // Each host's stream holds exactly what that host says the logger committed of its part. The --param
-            // re-made Survey on the flyer under the same node id: named twice, kept as one fdnet_node row.
-            Map<String, Long> renamed = Map.of("flyer", 1L, "crawler", 0L, "operator-station", 0L);
+            // Each host's stream holds exactly what that host says the logger committed of its part. Each --param
+            // re-made its Relation under the same node id (Survey on the flyer, ChooseSector and Confidence on the
+            // crawler): named twice, kept as one fdnet_node row.
+            Map<String, Long> renamed = Map.of("flyer", 1L, "crawler", 2L, "operator-station", 0L);
             for (Map.Entry<String, Long> host : renamed.entrySet()) {
                 String stream = database.fixture().text("SELECT r.run_uuid::text" + streams + " AND r.host = '"
                         + host.getKey() + "'");
@@ -143,14 +151,23 @@ class DistributedRunWithLoggerTest {
                     + " JOIN fdnet_run r USING (run_id) JOIN fdnet_network_run n USING (network_run_id)"
                     + " WHERE x.kind = 'data' AND n.run_uuid = '" + runId + "'";
             assertThat(database.fixture().text(nodes)).isEqualTo("Certainty@crawler,Heading@crawler,Map@flyer");
-            // The Map values the new expression made grow with time: stored once each, in time order.
+            // Every Data's values in time order, as its home host wrote them: each once, each after the one before.
             String ofData = "(SELECT x.sourceid FROM fdnet_node x JOIN fdnet_run r USING (run_id) JOIN fdnet_network_run n"
                     + " USING (network_run_id) WHERE n.run_uuid = '" + runId + "' AND x.node = '";
-            List<Double> firsts = mapFirstElements(ofData + "Map')");
-            assertThat(firsts).as(database.fixture().text("SELECT string_agg(value, ' | ' ORDER BY time) FROM"
-                    + " datavalue_log WHERE sourceid = " + ofData + "Map')")).hasSizeGreaterThan(10);
-            for (int i = 1; i < firsts.size(); i++) {
-                assertThat(firsts.get(i)).as("Map value %d of %d", i, firsts.size()).isGreaterThan(firsts.get(i - 1));
+            List<Double> map = mapFirstElements(ofData + "Map')");
+            assertStrictlyOrdered("Map[0]", map, 1, ofData + "Map')");
+            List<Double> heading = valuesAfterTheParameters(ofData + "Heading')");
+            assertStrictlyOrdered("Heading", heading, 1, ofData + "Heading')");
+            List<Double> certainty = valuesAfterTheParameters(ofData + "Certainty')");
+            assertStrictlyOrdered("Certainty", certainty, -1, ofData + "Certainty')");
+            // ... and each crawler value was computed from a Map value the flyer stored: nothing made up or mixed up
+            for (double h : heading) {
+                assertThat(map).as("the Map behind Heading %s", h).anySatisfy(m -> assertThat(m).isCloseTo(h - 1000,
+                        org.assertj.core.data.Offset.offset(1e-9)));
+            }
+            for (double c : certainty) {
+                assertThat(map).as("the Map behind Certainty %s", c).anySatisfy(m -> assertThat(m).isCloseTo(1000 - c,
+                        org.assertj.core.data.Offset.offset(1e-9)));
             }
             for (String data : List.of("Map", "Heading", "Certainty")) {
                 String of = " FROM datavalue_log WHERE sourceid = " + ofData + data + "')";
@@ -164,22 +181,57 @@ class DistributedRunWithLoggerTest {
 
     private static final Pattern RUN_STARTED = Pattern.compile("run ([0-9a-f-]{36}) of two-robots started");
 
+    /**
+     * {@code values}, a Data's values in time order, each strictly above ({@code direction} 1) or below (-1) the one
+     * before it: no value twice, none out of order; at least ten of them (the run makes about fifty).
+     */
+    private static void assertStrictlyOrdered(String data, List<Double> values, int direction, String sourceId)
+            throws SQLException {
+        assertThat(values).as("%s: %s", data, database.fixture().text("SELECT string_agg(value, ' | ' ORDER BY time)"
+                + " FROM datavalue_log WHERE sourceid = " + sourceId)).hasSizeGreaterThan(10);
+        for (int i = 1; i < values.size(); i++) {
+            assertThat(Math.signum(values.get(i) - values.get(i - 1))).as("%s value %d of %d: %s after %s", data, i,
+                    values.size(), values.get(i), values.get(i - 1)).isEqualTo((double) direction);
+        }
+    }
+
+    /** A crawler Data's values in time order, less those from before the --param expressions (-1, or below 500). */
+    private static List<Double> valuesAfterTheParameters(String sourceId) throws SQLException {
+        List<Double> values = new ArrayList<>();
+        for (String text : valuesInTimeOrder(sourceId)) {
+            double v = Double.parseDouble(text);
+            if (v > 500) { // 1000 ± the flyer's seconds; the file's expressions give 0..270 and 0..1
+                values.add(v);
+            }
+        }
+        return values;
+    }
+
     /** Map[0] of every Map value the --param expression wrote ([t, t+1, t+2, t+3]), in time order. */
     private static List<Double> mapFirstElements(String mapSourceId) throws SQLException {
         List<Double> firsts = new ArrayList<>();
-        try (java.sql.Connection c = database.fixture().target().open();
-             java.sql.Statement s = c.createStatement();
-             java.sql.ResultSet rs = s.executeQuery("SELECT value FROM datavalue_log WHERE sourceid = " + mapSourceId
-                     + " ORDER BY time")) {
-            while (rs.next()) {
-                String[] parts = rs.getString(1).split(",");
-                double first = Double.parseDouble(parts[0]);
-                if (parts.length == 4 && Math.abs(Double.parseDouble(parts[3]) - first - 3.0) < 0.01) { // t is read once per element
-                    firsts.add(first);
-                }
+        for (String text : valuesInTimeOrder(mapSourceId)) {
+            String[] parts = text.split(",");
+            double first = Double.parseDouble(parts[0]);
+            if (parts.length == 4 && Math.abs(Double.parseDouble(parts[3]) - first - 3.0) < 0.01) { // t is read once per element
+                firsts.add(first);
             }
         }
         return firsts;
+    }
+
+    /** Every value of node {@code sourceId} as stored, in time order. */
+    private static List<String> valuesInTimeOrder(String sourceId) throws SQLException {
+        List<String> values = new ArrayList<>();
+        try (java.sql.Connection c = database.fixture().target().open();
+             java.sql.Statement s = c.createStatement();
+             java.sql.ResultSet rs = s.executeQuery("SELECT value FROM datavalue_log WHERE sourceid = " + sourceId
+                     + " ORDER BY time")) {
+            while (rs.next()) {
+                values.add(rs.getString(1));
+            }
+        }
+        return values;
     }
 
     private FdnetChildProcess start(String label, List<String> args, String readyMarker) {

@@ -32,8 +32,8 @@ public final class HostCommand implements Callable<Integer> {
     List<Path> allowedPaths = new ArrayList<>();
 
     @Option(names = "--workers", paramLabel = "N",
-            description = "worker threads of this host's engine (default: one per core); it serves every network"
-                    + " deployed here, so fdnet run --workers cannot size it")
+            description = "worker threads of this host's engine (default: one per core); a run deployed here with"
+                    + " fdnet run --workers M runs M instead, a run without it this many")
     Integer workers;
 
     @Option(names = "--logger", paramLabel = "HOST:PORT",

@@ -18,7 +18,9 @@ import org.fdnet.hi.live.LiveNetworkFinder;
 import org.fdnet.netinfo.xml.NetworkFileException;
 import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.tls.TlsOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -30,6 +32,7 @@ import picocli.CommandLine.Model.CommandSpec;
             "A file with problems opens read-only with its problem list.",
             "Live: --attach NAME edits a running network (each edit is sent to it first and shown once executed);",
             "--run starts FILE in this process and attaches to it.",
+            "--tls DIR/NAME.p12 attaches to a network whose processes speak mutual TLS (fdnet keys).",
             "With --screenshot, renders the window to a PNG and exits (needs a display, e.g. xvfb-run)."})
 public final class HiCommand implements Callable<Integer> {
     @Parameters(arity = "0..1", paramLabel = "FILE", description = "the .fdn network to open")
@@ -71,6 +74,9 @@ public final class HiCommand implements Callable<Integer> {
     @Option(names = "--find", paramLabel = "TEXT", description = "search for TEXT as Ctrl-F does")
     String find;
 
+    @Mixin
+    TlsOptions tls;
+
     @Spec
     CommandSpec spec;
 
@@ -78,6 +84,12 @@ public final class HiCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        try {
+            tls.apply(); // first: a bad key store is named even where no window can open
+        } catch (IllegalArgumentException e) {
+            spec.commandLine().getErr().println("fdnet hi: --tls: " + e.getMessage());
+            return 2;
+        }
         if (GraphicsEnvironment.isHeadless()) {
             spec.commandLine().getErr().println("fdnet hi: no display (DISPLAY is not set); run it under X, or xvfb-run for --screenshot");
             return 2;

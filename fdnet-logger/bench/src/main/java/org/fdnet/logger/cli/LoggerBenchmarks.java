@@ -4,11 +4,14 @@ import java.util.List;
 import org.fdnet.cli.CommandProvider;
 import org.fdnet.logger.soak.SoakCommand;
 
-/** Adds {@code fdnet logger}, {@code fdnet soak} and {@code fdnet bench logger}. */
-public final class LoggerCommandProvider implements CommandProvider {
+/**
+ * Adds the logger's rigs: {@code fdnet bench logger} and {@code fdnet soak} (the fault-injection rig over a whole
+ * network). They live in fdnet-logger/bench, never in the logger's jar.
+ */
+public final class LoggerBenchmarks implements CommandProvider {
     @Override
     public List<Object> commands() {
-        return List.of(new LoggerCommand(), new SoakCommand());
+        return List.of(new SoakCommand());
     }
 
     @Override

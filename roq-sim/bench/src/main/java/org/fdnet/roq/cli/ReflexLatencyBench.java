@@ -6,7 +6,7 @@ import java.util.concurrent.locks.LockSupport;
 import org.fdnet.event.client.ClientStatus;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
-import org.fdnet.logger.NetworkStateLogger;
+import org.fdnet.logger.InProcessLogger;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.JointCommand;
@@ -54,10 +54,10 @@ final class ReflexLatencyBench {
                 StimulusLatencyRun.CELL_BREAK_RUNS);
         LatencySample echo = echoAlone();
         System.out.printf(Locale.ROOT, "baseline: bare Java echo, every snapshot: %s commands%n", echo.summary());
-        NetworkStateLogger logger = null;
+        InProcessLogger logger = null;
         if (record) {
             try {
-                logger = LocalLogger.start();
+                logger = InProcessLogger.ofUserConfig(false);
             } catch (Exception e) {
                 System.err.println("fdnet bench roq: the logger does not start: " + e.getMessage()
                         + " (run with --no-logger to do without)");
@@ -93,7 +93,7 @@ final class ReflexLatencyBench {
                             : periodic.latencies().percentile(99) + " ms", echo.percentile(99));
         } finally {
             if (logger != null) {
-                logger.stop();
+                logger.close();
             }
         }
         return 0;

@@ -18,7 +18,7 @@ import org.junit.jupiter.api.Test;
  * 1344 N without): the two findings, both pinned, so a change to Balance or the reflex that moves either shows.
  */
 class PushSurvivalTest {
-    private static final Path NETWORK = Path.of("..", "networks", "roq-reflex-bench.fdn");
+    private static final Path NETWORK = Path.of("..", "..", "networks", "roq-reflex-bench.fdn");
     private static PushTrial full;
     private static PushTrial bare;
 

@@ -11,6 +11,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
 import org.HdrHistogram.Histogram;
 import org.HdrHistogram.Recorder;
+import org.fdnet.logger.InProcessLogger;
 import org.fdnet.event.DataValueEvent;
 import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.event.ValueType;
@@ -61,7 +62,7 @@ public final class BenchViewerCommand implements Callable<Integer> {
                 series, rate, series * rate, seconds, width, height, window);
         System.out.println("starting a logger on a throwaway embedded PostgreSQL ...");
         System.out.println("machine load at start: " + load());
-        try (ThrowawayLogger logger = new ThrowawayLogger()) {
+        try (InProcessLogger logger = InProcessLogger.throwaway()) {
             Recorder stream = new Recorder(3);
             AtomicBoolean measuring = new AtomicBoolean();
             PlotData data = new PlotData();

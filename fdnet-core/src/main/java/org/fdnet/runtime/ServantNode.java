@@ -1,11 +1,10 @@
-package org.fdnet.runtime.servant;
+package org.fdnet.runtime;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.BooleanSupplier;
-import org.fdnet.runtime.Value;
 
 /**
  * One servant of the servant tree (thesis Appendix 2: "root servants, parent servants, child servants"): a name,

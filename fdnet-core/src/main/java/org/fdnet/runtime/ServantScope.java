@@ -1,11 +1,9 @@
-package org.fdnet.runtime.servant;
+package org.fdnet.runtime;
 
 import java.util.function.Function;
 import org.fdnet.netinfo.LinkedConnection;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.runtime.ChangeOutcome;
-import org.fdnet.runtime.NetworkEdit;
 
 /**
  * What the Servants read and change: this engine alone ({@link EngineScope}), or the whole network over every

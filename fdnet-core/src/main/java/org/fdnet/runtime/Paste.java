@@ -1,4 +1,4 @@
-package org.fdnet.runtime.servant;
+package org.fdnet.runtime;
 
 import java.util.List;
 import org.fdnet.netinfo.ConnectionInfo;
@@ -8,9 +8,6 @@ import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.runtime.ChangeOutcome;
-import org.fdnet.runtime.NetworkEdit;
-import org.fdnet.runtime.NetworkEdits;
 
 /**
  * The Paste servant: creates and destroys nodes, connects and disconnects them. Each call is one change

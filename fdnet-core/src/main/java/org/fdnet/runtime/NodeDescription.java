@@ -1,12 +1,10 @@
-package org.fdnet.runtime.servant;
+package org.fdnet.runtime;
 
 import java.util.List;
 import org.fdnet.netinfo.LinkedConnection;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.runtime.RelationState;
-import org.fdnet.runtime.Value;
 
 /**
  * What {@link Reflect} tells about a node: its definition, whether it runs here, its value (a Data) or

@@ -1,4 +1,4 @@
-package org.fdnet.runtime.servant;
+package org.fdnet.runtime;
 
 import java.util.List;
 import java.util.function.Function;
@@ -8,10 +8,6 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.runtime.ChangeOutcome;
-import org.fdnet.runtime.NetworkEdit;
-import org.fdnet.runtime.RelationState;
-import org.fdnet.runtime.Value;
 
 /**
  * The Servants' view of a network over several hosts: definition, placement and changes come from the

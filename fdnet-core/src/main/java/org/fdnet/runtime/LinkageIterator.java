@@ -1,4 +1,4 @@
-package org.fdnet.runtime.servant;
+package org.fdnet.runtime;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;

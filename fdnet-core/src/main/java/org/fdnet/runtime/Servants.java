@@ -1,12 +1,8 @@
-package org.fdnet.runtime.servant;
+package org.fdnet.runtime;
 
 import java.util.concurrent.CompletableFuture;
 import java.util.function.BooleanSupplier;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.runtime.ChangeOutcome;
-import org.fdnet.runtime.Controller;
-import org.fdnet.runtime.RuntimeNetwork;
-import org.fdnet.runtime.Value;
 
 /**
  * FDNet's Servants (thesis Appendix 2): the network-wide API a Relation gets from

@@ -1,4 +1,4 @@
-package org.fdnet.runtime.servant;
+package org.fdnet.runtime;
 
 /** A message no servant answered: no servant at that path, or the servant refused it. The message says why. */
 public final class MessageRefusedException extends RuntimeException {

@@ -1,4 +1,4 @@
-package org.fdnet.runtime.servant;
+package org.fdnet.runtime;
 
 import java.lang.reflect.InvocationTargetException;
 import java.util.List;
@@ -10,7 +10,6 @@ import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
-import org.fdnet.runtime.Value;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

@@ -1,12 +1,9 @@
-package org.fdnet.runtime.servant;
+package org.fdnet.runtime;
 
 import java.util.Map;
 import java.util.Set;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.runtime.ChangeOutcome;
-import org.fdnet.runtime.NetworkEdit;
-import org.fdnet.runtime.Value;
 
 /**
  * The whole of a network that runs over several hosts, as the Servants of one host's Relations see and reshape it.

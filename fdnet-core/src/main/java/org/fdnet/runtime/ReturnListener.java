@@ -1,7 +1,6 @@
-package org.fdnet.runtime.servant;
+package org.fdnet.runtime;
 
 import java.util.function.Consumer;
-import org.fdnet.runtime.Value;
 
 /**
  * The thesis's {@code ReturnListener}: how a servant tells the Relation that sent it a message that its work is

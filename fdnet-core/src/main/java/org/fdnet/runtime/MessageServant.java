@@ -1,6 +1,4 @@
-package org.fdnet.runtime.servant;
-
-import org.fdnet.runtime.Value;
+package org.fdnet.runtime;
 
 /**
  * What a servant of the servant tree does with a message (thesis Appendix 2, {@code sendMessage}): answers

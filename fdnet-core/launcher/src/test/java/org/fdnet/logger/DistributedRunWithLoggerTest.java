@@ -52,7 +52,7 @@ class DistributedRunWithLoggerTest {
                     List.of("host", "--name", "flyer", "--naming", naming, "--logger", loggerAddress), "fdnet host flyer ready");
             List<String> crawlerArgs = List.of("host", "--name", "crawler", "--naming", naming);
             FdnetChildProcess firstCrawler = start("host crawler", crawlerArgs, "fdnet host crawler ready");
-            FdnetChildProcess run = start("run two-robots", List.of("run", "../networks/two-robots.fdn", "--naming", naming,
+            FdnetChildProcess run = start("run two-robots", List.of("run", "../../networks/two-robots.fdn", "--naming", naming,
                     "--as", "operator-station", "--for", "30s", "--logger", loggerAddress), "running on 3 hosts");
 
             awaitLine(run, l -> l.startsWith("[operator]") && !l.endsWith("main/Certainty=0.0000"));
@@ -109,7 +109,7 @@ class DistributedRunWithLoggerTest {
                     "fdnet host flyer ready");
             FdnetChildProcess crawler = start("host crawler", List.of("host", "--name", "crawler", "--naming", naming),
                     "fdnet host crawler ready");
-            FdnetChildProcess run = start("run two-robots", List.of("run", "../networks/two-robots.fdn", "--naming",
+            FdnetChildProcess run = start("run two-robots", List.of("run", "../../networks/two-robots.fdn", "--naming",
                     naming, "--as", "operator-station", "--for", "6s", "--logger", loggerAddress,
                     "--param", "Survey:expression=[t, t + 1, t + 2, t + 3]"), "running on 3 hosts");
             assertThat(run.awaitExit(120_000)).as(String.join("\n", run.output())).isZero();

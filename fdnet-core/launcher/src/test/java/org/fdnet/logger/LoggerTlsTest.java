@@ -79,7 +79,7 @@ class LoggerTlsTest {
     void shouldRefuseToListenOffLoopbackWithoutTlsUnlessInsecure() {
         String elsewhere = "192.0.2.7"; // TEST-NET-1: checked before anything binds, so it need not be this machine's
         for (String[] command : new String[][] {{"logger", "--bind", elsewhere}, {"naming", "--bind", elsewhere},
-                {"host", "--name", "x", "--bind", elsewhere}, {"run", "../networks/two-robots.fdn", "--bind", elsewhere}}) {
+                {"host", "--name", "x", "--bind", elsewhere}, {"run", "../../networks/two-robots.fdn", "--bind", elsewhere}}) {
             StringWriter err = new StringWriter();
             CommandLine cli = FdnetCommand.commandLine().setErr(new PrintWriter(err, true));
             int exit = cli.execute(command);

@@ -26,7 +26,7 @@ class RunWithLoggerTest {
         try (NetworkStateLogger logger = new NetworkStateLogger(database.fixture().loggerConfig())) {
             logger.start();
             CliRun cli = new CliRun();
-            int exit = cli.fdnet("run", "../networks/roq-motion.fdn", "--for", "2s", "--set", "Walk/I want to walk=0.5",
+            int exit = cli.fdnet("run", "../../networks/roq-motion.fdn", "--for", "2s", "--set", "Walk/I want to walk=0.5",
                     "--logger", "127.0.0.1:" + logger.receiverPort());
             String out = cli.output();
             assertThat(exit).as(out).isZero();

@@ -24,7 +24,7 @@ class SoakTest {
     void shouldLoseNoAcknowledgedValueWhileEveryFaultKindIsInjected() {
         StringWriter out = new StringWriter();
         int exit = FdnetCommand.commandLine().setOut(new PrintWriter(out, true)).setErr(new PrintWriter(out, true))
-                .execute("soak", "--for", "60s", "--network", "../networks/two-robots.fdn", "--work", work.toString());
+                .execute("soak", "--for", "60s", "--network", "../../networks/two-robots.fdn", "--work", work.toString());
         String report = out.toString();
         assertThat(exit).as(report).isZero();
         for (FaultKind kind : FaultKind.values()) {

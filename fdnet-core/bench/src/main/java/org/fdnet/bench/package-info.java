@@ -11,7 +11,9 @@
  *   ──▶ ratios, target verdicts on the cold figures and the warm medians
  * </pre>
  *
- * The other parts' benchmarks live beside their code ({@code runtime.bench}, {@code corba.bench},
- * {@code logger.cli}); all of them print a baseline measured in the same run.
+ * This package is fdnet-core/bench's, a module of its own: no product jar carries a benchmark. {@link
+ * org.fdnet.bench.CoreBenchmarks} registers {@code load}, {@code core} ({@code runtime.bench}) and {@code corba}
+ * ({@code corba.bench}) through {@code CommandProvider}; the other bench modules (fdnet-logger/bench, ...) register
+ * theirs the same way. All of them print a baseline measured in the same run.
  */
 package org.fdnet.bench;

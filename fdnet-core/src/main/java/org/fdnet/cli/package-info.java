@@ -1,11 +1,14 @@
 /**
- * The {@code fdnet} command line (picocli), the entry point of {@code bin/fdnet}.
+ * The {@code fdnet} command line (picocli), the entry point of {@code bin/fdnet}. The plug-in point,
+ * {@link org.fdnet.cli.CommandProvider}, is in fdnet-api (same package), so the logger and the viewer add their
+ * commands without depending on the engine.
  *
  * <pre>
- *   bin/fdnet ──▶ FdnetCommand.main ──▶ core commands (validate, info, fmt)
+ *   bin/fdnet ──▶ FdnetCommand.main ──▶ core commands (validate, info, fmt, keys)
  *                        │
- *                        ├── ServiceLoader&lt;CommandProvider&gt; ──▶ commands of other parts (run, logger, host, ...)
- *                        └── bench ──▶ benchmarks from every CommandProvider (load, core, corba, logger)
+ *                        ├── ServiceLoader&lt;CommandProvider&gt; ──▶ commands of every module (run, host, logger, demo, ...)
+ *                        └── bench (BenchCommand names none) ──▶ benchmarks of every bench module
+ *                              (fdnet-core/bench: load, core, corba; fdnet-logger/bench: logger; ...: viewer, hi, rt, sim, roq)
  * </pre>
  */
 package org.fdnet.cli;

@@ -26,7 +26,7 @@ import org.fdnet.runtime.ChangeListener;
 import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.NetworkControl;
 import org.fdnet.runtime.NetworkEdit;
-import org.fdnet.runtime.servant.WholeNetwork;
+import org.fdnet.runtime.WholeNetwork;
 import org.omg.CORBA.SystemException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;

@@ -10,8 +10,8 @@ import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.Controller;
 import org.fdnet.runtime.NetworkEdit;
-import org.fdnet.runtime.servant.ServantRegistry;
-import org.fdnet.runtime.servant.WholeNetwork;
+import org.fdnet.runtime.ServantRegistry;
+import org.fdnet.runtime.WholeNetwork;
 
 /**
  * What a host needs from the engine that runs its share of a network: the seam between CORBA

@@ -16,7 +16,7 @@ import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.runtime.servant.WholeNetwork;
+import org.fdnet.runtime.WholeNetwork;
 
 /** The whole network ({@link WholeNetwork.Snapshot}) to the IDL {@code NetworkDescription} and back. */
 final class NetworkDescriptions {

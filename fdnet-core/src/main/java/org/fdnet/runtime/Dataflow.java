@@ -6,7 +6,6 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.concurrent.locks.StampedLock;
 import java.util.function.Function;
-import org.fdnet.runtime.servant.Servants;
 
 /**
  * The hot path: snapshots, commits and run requests. Values move like this:

@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.runtime.servant.Servants;
 
 /**
  * The {@link RelationContext} of one Relation, reused for each of its firings (a Relation never fires

@@ -2,7 +2,6 @@ package org.fdnet.runtime;
 
 import java.util.List;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.runtime.servant.Servants;
 
 /**
  * What a Relation sees during one firing. Inputs are the Datas it reads, in the order its Reader

@@ -27,9 +27,6 @@ import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.loading.NodeClassResolver;
-import org.fdnet.runtime.servant.ServantRegistry;
-import org.fdnet.runtime.servant.Servants;
-import org.fdnet.runtime.servant.WholeNetwork;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

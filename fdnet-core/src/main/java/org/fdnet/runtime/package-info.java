@@ -1,9 +1,15 @@
 /**
  * The FDNet runtime on one host: the programming model for node authors ({@link org.fdnet.runtime.Data},
  * {@link org.fdnet.runtime.SensorData}, {@link org.fdnet.runtime.Relation},
- * {@link org.fdnet.runtime.RelationContext}, {@link org.fdnet.runtime.Value}), the engine that runs a
+ * {@link org.fdnet.runtime.RelationContext}, {@link org.fdnet.runtime.Value}), the Servants a Relation reshapes
+ * the network with ({@link org.fdnet.runtime.Servants}), the engine that runs a
  * {@link org.fdnet.netinfo.NetworkInfo} ({@link org.fdnet.runtime.RuntimeNetwork}), and the one surface
  * everybody else acts through ({@link org.fdnet.runtime.Controller}).
+ *
+ * <p>The Servants live in this package, not a sub-package: a Relation's context hands them out
+ * ({@code RelationContext.servants()}) and they speak Values, ChangeOutcomes and NetworkEdits, so the two are one
+ * API; as two packages they were an import cycle. Everything above this package (library, loading, control,
+ * corba, run, the tools) imports it; it imports only {@code netinfo} and {@code event} (fdnet-api).
  *
  * <h2>Flow of one value</h2>
  * <pre>
@@ -53,5 +59,38 @@
  *     setValue, forward its values with observe); a remote Relation on a local Data is simply recorded.
  *     {@link org.fdnet.runtime.Controller#remoteLinks()} lists them, broken ones with the reason.</li>
  * </ol>
+ *
+ * <h2>Servants (thesis Appendix 2)</h2>
+ * The network-wide API a Relation uses to see and reshape the whole network. Not CORBA servants (those are the
+ * {@code …Impl} classes of the distribution layer).
+ * <pre>
+ *   Relation.compute(ctx) ──▶ ctx.servants()
+ *        ├── Visitor          find running nodes (by class, by name, by predicate)
+ *        ├── Reflect          describe one node: definition, value/state, connections
+ *        ├── Paste            create/destroy nodes, connect/disconnect/activate ──┐
+ *        ├── NetworkIterator  follow the flow of values (the thesis's Iterator)     │ change requests of the
+ *        ├── LinkageIterator  the connections crossed, live or dormant             │ network's Controller,
+ *        └── load/unload/hold/resume modules ───────────────────────────────────────┘ logged with the Relation
+ *                                                                                     as source ("proc")
+ * </pre>
+ *
+ * <p>Where they look: {@link org.fdnet.runtime.ServantScope}. On one host, the engine itself
+ * ({@code EngineScope}). On a host of a distributed network, the {@link org.fdnet.runtime.WholeNetwork}
+ * the distribution layer installed ({@code WholeNetworkScope}): the whole definition and where each node runs come
+ * from the network's coordinator, this host's own nodes are read from its engine, others' values from their host,
+ * and every change is prepared and committed on every host it touches.
+ * <pre>
+ *   Visitor / Reflect / Iterators ─▶ snapshot (definition + loaded modules + node → host) ─▶ descriptions
+ *   Paste / load / unload / hold / resume ─▶ WholeNetwork ─▶ coordinator ─▶ every host it touches (or refused)
+ * </pre>
+ *
+ * <p>The servant system proper ({@link org.fdnet.runtime.ServantRegistry}, one per engine): servant classes
+ * and their {@code name:N} instances, the tree of {@link org.fdnet.runtime.ServantNode}s from the root, and
+ * typed messages between Relations answered through a {@link org.fdnet.runtime.ReturnListener}:
+ * <pre>
+ *   Relation A ─sendMessage(path, message, Value)─▶ messaging thread ─▶ tree here: MessageServant.answer
+ *                                                                   └▶ else WholeNetwork.message ─▶ other hosts
+ *   ReturnListener.returned(reply) / refused(reason) ◀───────────────────────────────────────────────┘
+ * </pre>
  */
 package org.fdnet.runtime;

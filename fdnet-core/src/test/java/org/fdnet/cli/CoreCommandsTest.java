@@ -85,6 +85,12 @@ class CoreCommandsTest {
     }
 
     @Test
+    void theCoreAloneShouldCarryNoBenchmark() {
+        // the benchmarks are the bench modules' (fdnet-core/bench, ...), none of which fdnet-core's tests see
+        assertThat(FdnetCommand.commandLine().getSubcommands().get("bench").getSubcommands()).isEmpty();
+    }
+
+    @Test
     void theExampleNetworksShouldBeInCanonicalForm() {
         assertThat(fdnet("fmt", "--check", "../networks/arms.fdn")).isZero();
     }

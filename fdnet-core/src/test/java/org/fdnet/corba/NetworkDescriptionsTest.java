@@ -8,7 +8,7 @@ import java.util.Set;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.xml.NetworkRepository;
-import org.fdnet.runtime.servant.WholeNetwork;
+import org.fdnet.runtime.WholeNetwork;
 import org.junit.jupiter.api.Test;
 
 /** A paste travels as the whole definition after it: the trip through the IDL must lose nothing. */

@@ -6,14 +6,14 @@ import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.Parameter;
 import org.fdnet.runtime.ChangeOutcome;
+import org.fdnet.runtime.LinkageIterator;
+import org.fdnet.runtime.NodeDescription;
 import org.fdnet.runtime.NodeParameters;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
+import org.fdnet.runtime.Servants;
 import org.fdnet.runtime.Value;
 import org.fdnet.runtime.library.DoubleData;
-import org.fdnet.runtime.servant.LinkageIterator;
-import org.fdnet.runtime.servant.NodeDescription;
-import org.fdnet.runtime.servant.Servants;
 
 /**
  * A Relation that reports what its Servants show of the whole network, for {@code ServantsAcrossHostsTest}: it runs

@@ -10,8 +10,6 @@ import org.fdnet.event.MemoryEventSink;
 import org.fdnet.event.RelationValueEvent;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.xml.NetworkRepository;
-import org.fdnet.runtime.servant.MessageRefusedException;
-import org.fdnet.runtime.servant.ReturnListener;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

@@ -13,9 +13,6 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.library.DoubleSensor;
-import org.fdnet.runtime.servant.LinkageIterator;
-import org.fdnet.runtime.servant.NodeDescription;
-import org.fdnet.runtime.servant.Servants;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

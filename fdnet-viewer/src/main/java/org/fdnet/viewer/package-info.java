@@ -8,7 +8,7 @@
  * </pre>
  *
  * Packages: {@code data} (series), {@code source} (logger connection, replay), {@code ui} (window, plot,
- * CSV export), {@code cli} ({@code fdnet viewer}, {@code fdnet bench viewer}). Public API for the editor:
+ * CSV export), {@code cli} ({@code fdnet viewer}; {@code fdnet bench viewer} is fdnet-viewer/bench's). Public API for the editor:
  * {@link org.fdnet.viewer.ui.ViewerWindow#open(String, java.util.List)}.
  */
 package org.fdnet.viewer;

@@ -21,7 +21,7 @@ import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.RuntimeOptions;
-import org.fdnet.viewer.cli.ThrowawayLogger;
+import org.fdnet.logger.InProcessLogger;
 import org.fdnet.viewer.data.PlotData;
 import org.fdnet.viewer.data.SampleDecoder;
 import org.fdnet.viewer.data.Series;
@@ -37,11 +37,11 @@ import org.junit.jupiter.api.Timeout;
 /** The viewer against a real logger on embedded PostgreSQL: live values of a running network, and replay. */
 @Timeout(value = 180, unit = TimeUnit.SECONDS)
 class ViewerEndToEndTest {
-    private static ThrowawayLogger logger;
+    private static InProcessLogger logger;
 
     @BeforeAll
     static void startLogger() throws Exception {
-        logger = new ThrowawayLogger();
+        logger = InProcessLogger.throwaway();
     }
 
     @AfterAll

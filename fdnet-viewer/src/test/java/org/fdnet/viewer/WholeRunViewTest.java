@@ -16,7 +16,7 @@ import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.event.wire.LoggedNode;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.viewer.cli.ThrowawayLogger;
+import org.fdnet.logger.InProcessLogger;
 import org.fdnet.viewer.data.PlotData;
 import org.fdnet.viewer.source.LoggerConnection;
 import org.fdnet.viewer.source.RunInfo;
@@ -39,7 +39,7 @@ class WholeRunViewTest {
         long base = System.currentTimeMillis() * 1000 - 30_000_000;
         RunIdentity run = RunIdentity.start("two-robots", "<cnet name=\"two-robots\"/>",
                 List.of("flyer", "crawler", "operator"));
-        try (ThrowawayLogger logger = new ThrowawayLogger()) {
+        try (InProcessLogger logger = InProcessLogger.throwaway()) {
             for (String host : run.hosts()) {
                 long ahead = CLOCK_AHEAD.get(host);
                 LoggerClient client = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(),

@@ -1,7 +1,8 @@
 /**
- * The runtime's command-line pieces: {@code fdnet bench core}, the standard-input commands of a running network
+ * The runtime's command-line pieces: the standard-input commands of a running network
  * ({@link org.fdnet.runtime.cli.ControlCommands}), the {@code --set} and duration parsers, and the simulated-plant
- * seam. {@code fdnet run} itself is {@code org.fdnet.run}'s, which uses them.
+ * seam. {@code fdnet run} itself is {@code org.fdnet.run}'s, which uses them; {@code fdnet bench core}
+ * ({@code BenchCoreCommand}, same package) is fdnet-core/bench's.
  *
  * <pre>
  *   stdin "hold Walk" ──▶ ControlCommands ──▶ NetworkControl (the Controller, or DistributedControl) ──▶ "ok: …"

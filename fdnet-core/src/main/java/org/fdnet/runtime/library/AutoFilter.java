@@ -4,11 +4,11 @@ import java.util.List;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.Parameter;
+import org.fdnet.runtime.NodeDescription;
 import org.fdnet.runtime.NodeParameters;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
-import org.fdnet.runtime.servant.NodeDescription;
-import org.fdnet.runtime.servant.Servants;
+import org.fdnet.runtime.Servants;
 
 /**
  * Self-organization at work: watches the network (Visitor) for running sensor Datas — of class

@@ -3,13 +3,13 @@ package org.fdnet.runtime.library;
 import java.util.HashMap;
 import java.util.Map;
 import org.fdnet.event.ValueType;
+import org.fdnet.runtime.MessageRefusedException;
 import org.fdnet.runtime.NodeParameters;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
+import org.fdnet.runtime.ServantNode;
+import org.fdnet.runtime.Servants;
 import org.fdnet.runtime.Value;
-import org.fdnet.runtime.servant.MessageRefusedException;
-import org.fdnet.runtime.servant.ServantNode;
-import org.fdnet.runtime.servant.Servants;
 
 /**
  * A Relation that serves what it knows to other Relations (thesis Appendix 2, servants): it offers a servant at

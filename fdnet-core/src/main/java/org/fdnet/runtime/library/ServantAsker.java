@@ -7,8 +7,8 @@ import org.fdnet.runtime.Controller;
 import org.fdnet.runtime.NodeParameters;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
+import org.fdnet.runtime.ReturnListener;
 import org.fdnet.runtime.Value;
-import org.fdnet.runtime.servant.ReturnListener;
 
 /**
  * A Relation that asks a servant (thesis Appendix 2, {@code sendMessage} with a {@code ReturnListener}): each time

@@ -30,7 +30,7 @@ import org.fdnet.control.LiveNetwork;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.runtime.RuntimeOptions;
-import org.fdnet.viewer.cli.ThrowawayLogger;
+import org.fdnet.logger.InProcessLogger;
 import org.fdnet.viewer.ui.ViewerWindow;
 import org.fdnet.hi.live.InProcessRun;
 import org.fdnet.hi.live.LiveTestNetwork;
@@ -69,7 +69,7 @@ public final class LiveEditorScenario {
     public static void main(String[] args) throws Exception {
         Path images = Path.of(args[0]);
         ScenarioProcess.runAndExit(prefs -> {
-            try (ThrowawayLogger logger = new ThrowawayLogger()) {
+            try (InProcessLogger logger = InProcessLogger.throwaway()) {
                 LoggerClient events = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(), "live editor"));
                 try (InProcessRun run = InProcessRun.start(LiveTestNetwork.definition(),
                         RuntimeOptions.defaults().workerThreads(2).sink(events), Optional.of(logger.viewerAddress()))) {

@@ -13,7 +13,7 @@ import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.viewer.cli.ThrowawayLogger;
+import org.fdnet.logger.InProcessLogger;
 import org.fdnet.viewer.cli.ViewerCommand;
 import org.fdnet.viewer.source.Replay;
 import picocli.CommandLine;
@@ -29,7 +29,7 @@ public final class ViewerScenario {
     }
 
     public static void main(String[] args) throws Exception {
-        try (ThrowawayLogger logger = new ThrowawayLogger()) {
+        try (InProcessLogger logger = InProcessLogger.throwaway()) {
             AtomicBoolean writing = new AtomicBoolean(true);
             LoggerClient client = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(), "scenario"));
             EventClock clock = new EventClock();

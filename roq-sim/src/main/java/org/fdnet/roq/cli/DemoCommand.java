@@ -7,7 +7,7 @@ import java.util.concurrent.Callable;
 import org.fdnet.event.client.ClientStatus;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
-import org.fdnet.logger.NetworkStateLogger;
+import org.fdnet.logger.InProcessLogger;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.xml.NetworkFileException;
@@ -146,29 +146,29 @@ public final class DemoCommand implements Callable<Integer> {
             System.err.println("fdnet demo: --logger and --no-logger exclude each other");
             return 2;
         }
-        NetworkStateLogger embedded = null;
+        InProcessLogger embedded = null;
         if (!noLogger && logger == null) {
             System.out.println("fdnet demo: starting the network state logger (embedded PostgreSQL) ...");
             try {
-                embedded = LocalLogger.start(true);
+                embedded = InProcessLogger.ofUserConfig(true);
             } catch (Exception e) {
                 System.err.println("fdnet demo: the logger does not start: " + e.getMessage()
                         + " (run with --no-logger to do without)");
                 return 1;
             }
             logger = "127.0.0.1:" + embedded.receiverPort();
-            loggerViewer = LocalLogger.viewerAddress(embedded);
+            loggerViewer = embedded.viewerAddress();
         }
         try {
             return run(embedded);
         } finally {
             if (embedded != null) {
-                embedded.stop();
+                embedded.close();
             }
         }
     }
 
-    private int run(NetworkStateLogger embedded) throws Exception {
+    private int run(InProcessLogger embedded) throws Exception {
         Course c = CourseLoader.resolve(course);
         NetworkInfo definition = NetworkRepository.load(network);
         LoggerClient client = null;
@@ -280,10 +280,10 @@ public final class DemoCommand implements Callable<Integer> {
      * The one line telling where viewers reach the embedded logger and the logger's id of this run (what
      * {@code fdnet viewer --replay} takes), once the logger has opened the run (waits at most 3 s for that).
      */
-    private String viewerLine(NetworkStateLogger embedded, LoggerClient client) throws InterruptedException {
+    private String viewerLine(InProcessLogger embedded, LoggerClient client) throws InterruptedException {
         java.util.OptionalInt run = java.util.OptionalInt.empty();
         for (int i = 0; i < 60 && run.isEmpty(); i++) {
-            run = embedded.directory().runIdOf(client.run());
+            run = embedded.logger().directory().runIdOf(client.run());
             if (run.isEmpty()) {
                 Thread.sleep(50);
             }

@@ -3,15 +3,10 @@ package org.fdnet.roq.cli;
 import java.util.List;
 import org.fdnet.cli.CommandProvider;
 
-/** Adds {@code fdnet sim}, {@code fdnet bench rt}, {@code fdnet bench sim} and {@code fdnet bench roq}. */
+/** Adds {@code fdnet sim} and {@code fdnet demo} (the benchmarks are roq-sim/bench's). */
 public final class RoqCommandProvider implements CommandProvider {
     @Override
     public List<Object> commands() {
         return List.of(new SimCommand(), new DemoCommand());
-    }
-
-    @Override
-    public List<Object> benchmarks() {
-        return List.of(new BenchRtCommand(), new BenchSimCommand(), new BenchRoqCommand());
     }
 }

@@ -1,13 +1,20 @@
 /**
  * roq-sim's commands under {@code fdnet}: {@code sim} (run a course, print progress and a summary, optionally
- * a screenshot) and the benchmarks {@code bench rt} (the joint loop's wake-up latency beside cyclictest) and
- * {@code bench sim} (the stepped tick beside a bare {@code mj_step} loop), {@code bench roq} ((a) stepped speed of a
- * network driving the plant; (b) {@link org.fdnet.roq.cli.ReflexLatencyBench}: stimulus-to-applied-command latency
- * through the network, {@link org.fdnet.roq.cli.StimulusLatencyRun} per run; {@code --part push}:
- * {@link org.fdnet.roq.cli.PushSurvivalBench}, the largest push survived with and without Balance and Reflex, by
- * bisection over stepped {@link org.fdnet.roq.cli.PushTrial}s; {@code --part heading}:
- * {@link org.fdnet.roq.cli.HeadingDriftBench}, drift off the course line with and without module Course) and
- * {@code demo}. Registered through
+ * a screenshot) and {@code demo} (RoQ walking under a network on the real-time simulator, recorded by an
+ * {@code InProcessLogger} of the user's database). Registered through
  * {@link org.fdnet.roq.cli.RoqCommandProvider} in {@code META-INF/services/org.fdnet.cli.CommandProvider}.
+ *
+ * <p>The benchmarks of the same package live in roq-sim/bench, registered there by {@code RoqBenchmarks}:
+ * {@code bench rt} (the joint loop's wake-up latency beside cyclictest), {@code bench sim} (the stepped tick beside
+ * a bare {@code mj_step} loop), {@code bench roq} ((a) stepped speed of a network driving the plant; (b)
+ * {@code ReflexLatencyBench}: stimulus-to-applied-command latency through the network, {@code StimulusLatencyRun}
+ * per run; {@code --part push}: {@code PushSurvivalBench}, the largest push survived with and without Balance and
+ * Reflex, by bisection over stepped {@code PushTrial}s; {@code --part heading}: {@code HeadingDriftBench}, drift
+ * off the course line with and without module Course).
+ *
+ * <pre>
+ *   fdnet demo ──▶ DemoCommand ──▶ InProcessLogger? ─▶ RuntimeNetwork + RoqSimulator (real time) + SimBridge
+ *                                  └─▶ DemoMeter (what the network itself reports) ─▶ progress lines, summary
+ * </pre>
  */
 package org.fdnet.roq.cli;

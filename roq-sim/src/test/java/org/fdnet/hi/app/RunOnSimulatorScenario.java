@@ -10,7 +10,7 @@ import javax.swing.SwingUtilities;
 import org.fdnet.hi.live.LiveTestNetwork;
 import org.fdnet.logger.cache.EventCache;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.viewer.cli.ThrowawayLogger;
+import org.fdnet.logger.InProcessLogger;
 
 /**
  * Live → Run Open Network… on the simulated RoQ, driven like a user on a real display (run in a child JVM by
@@ -30,14 +30,14 @@ public final class RunOnSimulatorScenario {
 
     public static void main(String[] args) {
         ScenarioProcess.runAndExit(prefs -> {
-            try (ThrowawayLogger logger = new ThrowawayLogger()) {
+            try (InProcessLogger logger = InProcessLogger.throwaway()) {
                 runAndStop(HiApplication.start(STAND.toAbsolutePath().normalize(), new RecentFiles(prefs)), logger);
             }
         });
     }
 
     /** Run from the dialog on course flat, recorded by {@code logger}; see it live; Stop; its events committed. */
-    private static void runAndStop(HiWindow window, ThrowawayLogger logger) throws Exception {
+    private static void runAndStop(HiWindow window, InProcessLogger logger) throws Exception {
         SwingUtilities.invokeLater(RunFromEditorScenario.menuItem(window, "live.run")::doClick);
         waitFor(window, "the Run dialog", () -> RunFromEditorScenario.dialog() != null);
         LiveTestNetwork.edt(() -> {

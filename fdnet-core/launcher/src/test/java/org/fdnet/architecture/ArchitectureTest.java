@@ -1,0 +1,99 @@
+package org.fdnet.architecture;
+
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
+import static com.tngtech.archunit.library.Architectures.layeredArchitecture;
+import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.fdnet.architecture.FdnetModules.inABenchModule;
+import static org.fdnet.architecture.FdnetModules.inModule;
+import static org.fdnet.architecture.FdnetModules.inModulePackages;
+
+import com.tngtech.archunit.core.domain.JavaClasses;
+import com.tngtech.archunit.core.importer.ClassFileImporter;
+import com.tngtech.archunit.lang.ArchRule;
+import java.util.Set;
+import java.util.stream.Collectors;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The architecture docs/architecture.md draws, checked on the main code of every module (benchmarks included):
+ * no package cycle anywhere, and every import along the layering. A change that breaks either fails
+ * {@code mvn -B verify}; change the drawing and this test together.
+ */
+class ArchitectureTest {
+    private static final String CORE = "fdnet-core";
+    private static JavaClasses classes;
+
+    @BeforeAll
+    static void importEveryModule() {
+        classes = new ClassFileImporter().withImportOption(FdnetModules.MAIN_CODE_ONLY).importPackages("org.fdnet");
+    }
+
+    @Test
+    void shouldSeeTheMainCodeOfEveryModule() {
+        Set<String> modules = classes.stream().map(FdnetModules::moduleOf).collect(Collectors.toSet());
+        assertThat(modules).contains("fdnet-core/api", CORE, "fdnet-logger", "fdnet-viewer", "fdnet-hi", "roq-sim",
+                "fdnet-core/bench", "fdnet-logger/bench", "fdnet-viewer/bench", "fdnet-hi/bench", "roq-sim/bench");
+        assertThat(modules).doesNotContain("");
+    }
+
+    @Test
+    void shouldHaveNoPackageCycle() {
+        slices().matching("org.fdnet.(**)").namingSlices("$1")
+                .should().beFreeOfCycles()
+                .check(classes);
+    }
+
+    @Test
+    void shouldImportOnlyDownTheLayers() {
+        layers().check(classes);
+    }
+
+    @Test
+    void shouldKeepCorbaXmlAndTheEngineOutOfTheApiTheLoggerAndTheViewer() {
+        noClasses().that(inModule("fdnet-core/api")).or(inModule("fdnet-logger")).or(inModule("fdnet-viewer"))
+                .should().dependOnClassesThat().resideInAnyPackage("org.omg..", "org.jacorb..", "jakarta.xml.bind..")
+                .check(classes);
+    }
+
+    @Test
+    void shouldUseHdrHistogramInBenchModulesOnly() {
+        noClasses().that(com.tngtech.archunit.base.DescribedPredicate.not(inABenchModule()))
+                .should().dependOnClassesThat().resideInAPackage("org.HdrHistogram..")
+                .check(classes);
+    }
+
+    /** The layering of docs/architecture.md, bottom first. A layer may use the ones its line names. */
+    static ArchRule layers() {
+        return layeredArchitecture().consideringOnlyDependenciesInLayers()
+                .layer("Api").definedBy(inModule("fdnet-core/api"))
+                .layer("Files").definedBy(inModulePackages(CORE, "org.fdnet.netinfo.xml..", "org.fdnet.logging"))
+                .layer("Runtime").definedBy(inModulePackages(CORE, "org.fdnet.runtime", "org.fdnet.runtime.library",
+                        "org.fdnet.runtime.loading"))
+                .layer("Control").definedBy(inModulePackages(CORE, "org.fdnet.control"))
+                .layer("Distribution").definedBy(inModulePackages(CORE, "org.fdnet.corba", "org.fdnet.corba.control",
+                        "org.fdnet.corba.idl"))
+                .layer("Commands").definedBy(inModulePackages(CORE, "org.fdnet.cli", "org.fdnet.corba.cli",
+                        "org.fdnet.runtime.cli", "org.fdnet.run"))
+                .layer("Logger").definedBy(inModule("fdnet-logger"))
+                .layer("Viewer").definedBy(inModule("fdnet-viewer"))
+                .layer("Editor").definedBy(inModule("fdnet-hi"))
+                .layer("Simulator").definedBy(inModule("roq-sim"))
+                .layer("Bench").definedBy(inABenchModule())
+
+                .whereLayer("Api").mayNotAccessAnyLayer()
+                .whereLayer("Files").mayOnlyAccessLayers("Api")
+                .whereLayer("Runtime").mayOnlyAccessLayers("Api")
+                .whereLayer("Control").mayOnlyAccessLayers("Api", "Runtime")
+                .whereLayer("Distribution").mayOnlyAccessLayers("Api", "Files", "Runtime", "Control")
+                .whereLayer("Commands").mayOnlyAccessLayers("Api", "Files", "Runtime", "Control", "Distribution")
+                .whereLayer("Logger").mayOnlyAccessLayers("Api")
+                .whereLayer("Viewer").mayOnlyAccessLayers("Api")
+                .whereLayer("Editor").mayOnlyAccessLayers("Api", "Files", "Runtime", "Control", "Distribution",
+                        "Commands", "Viewer")
+                .whereLayer("Simulator").mayOnlyAccessLayers("Api", "Files", "Runtime", "Control", "Distribution",
+                        "Commands", "Logger", "Viewer")
+                .whereLayer("Bench").mayNotBeAccessedByAnyLayer();
+    }
+}

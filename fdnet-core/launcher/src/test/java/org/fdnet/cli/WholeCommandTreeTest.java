@@ -1,0 +1,26 @@
+package org.fdnet.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import org.junit.jupiter.api.Test;
+import picocli.CommandLine;
+
+/**
+ * With every module on the class path (what bin/fdnet runs), each part's commands and each bench module's benchmarks
+ * arrive through CommandProvider; BenchCommand itself names none.
+ */
+class WholeCommandTreeTest {
+    private final CommandLine fdnet = FdnetCommand.commandLine();
+
+    @Test
+    void shouldOfferEveryPartsCommands() {
+        assertThat(fdnet.getSubcommands()).containsKeys("validate", "info", "fmt", "keys", "run", "naming", "host",
+                "control", "logger", "viewer", "hi", "sim", "demo", "soak", "bench");
+    }
+
+    @Test
+    void shouldOfferEveryBenchModulesBenchmarks() {
+        assertThat(fdnet.getSubcommands().get("bench").getSubcommands())
+                .containsOnlyKeys("load", "core", "corba", "logger", "viewer", "hi", "rt", "sim", "roq");
+    }
+}

@@ -38,10 +38,10 @@ class RoqCoursesTest {
     /** Rubble seeds besides the built-in course's 2004. */
     private static final long[] SEEDS = {11, 12, 13, 14};
 
-    /** Simulated seconds of the heading runs: about 2 m of rubble (5 s of them standing while the gyro settles). */
-    private static final int HEADING_SECONDS = 50;
-    private static final String HELD = "roq-rubble rubble 12, 50 s";
-    private static final String UNHELD = "roq-rubble rubble 12, 50 s, module Course unloaded";
+    /** Simulated seconds of the heading runs: about 3 m of rubble (5 s of them standing while the gyro settles). */
+    private static final int HEADING_SECONDS = 70;
+    private static final String HELD = "roq-rubble rubble 12, 70 s";
+    private static final String UNHELD = "roq-rubble rubble 12, 70 s, module Course unloaded";
 
     private static final Map<String, Future<CourseRun>> RUNS = new LinkedHashMap<>();
     private static ExecutorService pool;
@@ -123,20 +123,20 @@ class RoqCoursesTest {
     @Test
     void shouldWalkLevelGroundOnItsLine() throws Exception {
         SoftAssertions soft = new SoftAssertions();
-        // measured 1.03 and 1.72 m in 40 s (roq-rubble's 5 s of settling included)
+        // measured 1.03 and 1.88 m in 40 s (roq-rubble's 5 s of settling included)
         holds(soft, run("roq-walk flat"), 0.8, LEVEL_TILT);
-        holds(soft, run("roq-rubble flat"), 1.35, LEVEL_TILT);
+        holds(soft, run("roq-rubble flat"), 1.5, LEVEL_TILT);
         soft.assertAll();
     }
 
     @Test
     void shouldClimbAndDescendSlopesUpToFifteenDegrees() throws Exception {
         SoftAssertions soft = new SoftAssertions();
-        // measured 1.47 m (the built-in course: 1 m of level ground first), 1.03 m (0.6 m of it up the 15° incline)
-        // and 1.79 m down
-        holds(soft, run("roq-rubble slope (built-in, 10 up)"), 1.15, Math.toRadians(10) + SLOPE_TILT);
-        holds(soft, run("roq-rubble slope 15 up"), 0.8, Math.toRadians(15) + SLOPE_TILT);
-        holds(soft, run("roq-rubble slope 15 down"), 1.4, Math.toRadians(15) + SLOPE_TILT);
+        // measured 1.54 m (the built-in course: 1 m of level ground first), 1.16 m (0.75 m of it up the 15° incline)
+        // and 1.90 m down
+        holds(soft, run("roq-rubble slope (built-in, 10 up)"), 1.2, Math.toRadians(10) + SLOPE_TILT);
+        holds(soft, run("roq-rubble slope 15 up"), 0.9, Math.toRadians(15) + SLOPE_TILT);
+        holds(soft, run("roq-rubble slope 15 down"), 1.5, Math.toRadians(15) + SLOPE_TILT);
         soft.assertAll();
     }
 
@@ -147,9 +147,9 @@ class RoqCoursesTest {
         for (long seed : SEEDS) {
             labels.add("roq-rubble rubble " + seed);
         }
-        // measured 1.63, 1.43, 1.58, 1.33, 1.57 m (seeds 2004, 11–14): median 1.57, the threshold 23 % below it
+        // measured 1.71, 1.51, 1.68, 1.71, 1.69 m (seeds 2004, 11–14): median 1.69, the threshold 23 % below it
         for (String label : labels) {
-            holds(soft, run(label), 1.2, LEVEL_TILT);
+            holds(soft, run(label), 1.3, LEVEL_TILT);
         }
         soft.assertAll();
     }
@@ -157,12 +157,13 @@ class RoqCoursesTest {
     @Test
     void shouldCrossFragileCellsBreakingThemOnlyWithAProbe() throws Exception {
         SoftAssertions soft = new SoftAssertions();
-        // measured 1.59 m (1 crust broken under a loaded foot) and 1.59 m (2 broken by probes, 2 under loaded feet).
+        // measured 1.75 m (1 crust broken under a loaded foot) and 1.67 m (4 broken by probes, none under a loaded
+        // foot here; 1-4 per 100 s crossing on noise seeds 1, 2, 3, 31).
         // Issue #19 asks for none under a loaded foot, which does NOT hold: a foothold accepted on a crust's edge,
         // partly on the ground beside it, bears the probe's 55 N and later breaks under the three-foot load. The
-        // longer stride (0.28 m, for the demo's 4 cm/s) made it more frequent: 0-3 per 100 s crossing (docs/roq-networks.md)
-        holds(soft, run("roq-rubble fragile"), 1.25, LEVEL_TILT, 2);
-        holds(soft, run("roq-rubble crossing"), 1.25, LEVEL_TILT, 2);
+        // longer stride (0.3 m, for the demo's 4 cm/s) made it more frequent (docs/roq-networks.md)
+        holds(soft, run("roq-rubble fragile"), 1.35, LEVEL_TILT, 2);
+        holds(soft, run("roq-rubble crossing"), 1.3, LEVEL_TILT, 2);
         soft.assertAll();
     }
 
@@ -170,12 +171,11 @@ class RoqCoursesTest {
     void shouldStayCloserToItsCourseLineWithModuleCourseThanWithout() throws Exception {
         CourseRun held = run(HELD);
         CourseRun unheld = run(UNHELD);
-        // measured over 2.2 m: off the heading 0.120 rad with Course, 0.236 without; off the line 0.383 m with it,
-        // 0.256 without. Course holds the heading (the gyro's bias learnt while RoQ settles); what it does not see is
-        // the body slipping sideways on the rubble, so the line is held only within half a metre (docs/roq-networks.md)
-        assertThat(held.distance()).as(held + ": metres walked").isGreaterThan(1.5);
-        assertThat(held.headingError()).as(held + " against " + unheld + ": off the heading, cycle mean, rad")
-                .isLessThan(0.75 * unheld.headingError());
-        assertThat(held.trackError()).as(held + ": off the course line, cycle mean, m").isLessThan(0.5);
+        // measured over 3.0 m: off the line 0.135 m with Course, 0.482 m without (bench roq --part heading: 0.28×,
+        // and 0.32× and 0.55× on seeds 2004 and 13); over shorter runs the drift without Course is too small to tell
+        assertThat(held.distance()).as(held + ": metres walked").isGreaterThan(2.2);
+        assertThat(held.trackError()).as(held + " against " + unheld + ": off the course line, cycle mean, m")
+                .isLessThan(0.75 * unheld.trackError());
+        assertThat(held.trackError()).as(held + ": off the course line, cycle mean, m").isLessThan(MAX_TRACK);
     }
 }

@@ -28,6 +28,14 @@ import org.fdnet.runtime.Value;
  * lifts. swing + shift ≤ 0.25 keeps one leg in the air at a time; 0.25 and 0 give the fastest crawl, duty factor
  * 3/4, with a leg in the air all the time.
  *
+ * <p>{@code settle} (s, default 0): RoQ stands that long from the gait's first firing before its first step, so
+ * that {@link HoldCourse} can learn the gyro's bias while the body is still: its phase names no leg (−1) then, so
+ * the balance does not shift the body; in the first half of it the feet move smoothly from the standing pose the
+ * simulator sets RoQ down in to the gait's. With a settle the crawl starts a quarter of a cycle on, front-right
+ * lifting first: there the feet's stagger along the body is the same on the left as on the right, so moving the
+ * planted feet into it does not turn the body (from phase 0 the left feet stand ahead of the right ones, and the
+ * body turned 0.17 rad and went on creeping round at 10 mrad/s while it stood, measured).
+ *
  * <p>{@code stance} (m, default the standing pose's 0.43): how far each foot stands from the body's centre line.
  * The simulator sets RoQ down in its standing pose; each leg moves to the stance while it swings, so after the
  * first four steps the feet walk at the stance's width.
@@ -63,6 +71,10 @@ public class CrawlGait extends Relation {
     private double height;
     private double phase;
     private double lastSeconds = Double.NaN;
+    /** The network time of the first firing, s. */
+    private double firstSeconds = Double.NaN;
+    /** How long RoQ stands before the first step, s (time for a gyro to learn its bias, see {@link HoldCourse}). */
+    private double settle;
     private double maxStep;
     private double retreat;
     private int tries;
@@ -108,6 +120,11 @@ public class CrawlGait extends Relation {
         if (tries < 1 || tries > 10) {
             throw p.invalid("tries", "must lie between 1 and 10, was " + tries);
         }
+        settle = p.doubleValue("settle", 0);
+        if (settle < 0 || settle > 30) {
+            throw p.invalid("settle", "must lie between 0 and 30 s, was " + settle);
+        }
+        phase = settle > 0 ? 0.25 : 0;
         maxStep = 4 * p.longValue("period", 10) / 1000.0;
         double[] foot = new double[3];
         for (int leg = 0; leg < LEGS; leg++) {
@@ -133,7 +150,10 @@ public class CrawlGait extends Relation {
         }
         steer(c);
         double advanced = 0;
-        if (!Double.isNaN(lastSeconds) && probingLeg < 0) {
+        if (Double.isNaN(firstSeconds)) {
+            firstSeconds = now;
+        }
+        if (!Double.isNaN(lastSeconds) && probingLeg < 0 && now - firstSeconds >= settle) {
             // a held gait does not fire: its phase waits; after a resume it goes on from there
             double before = phase;
             phase += Math.min(maxStep, Math.max(0, now - lastSeconds)) / cycle;
@@ -194,12 +214,40 @@ public class CrawlGait extends Relation {
             feet[3 * leg + 1] = fx * Math.sin(turn) + y * Math.cos(turn);
             feet[3 * leg + 2] = home[3 * leg + 2] + lift;
         }
+        if (now - firstSeconds < settle / 2) {
+            fromStandingPose((now - firstSeconds) / (settle / 2));
+        }
         c.output(0, Value.ofDoubles(feet));
         if (c.outputCount() > 1) {
+            // while RoQ settles no leg is about to lift (-1): the balance leaves the body where it stands, until the
+            // last second of it
+            int next = now - firstSeconds < settle - preShift() ? -1 : ORDER[quarter];
             c.output(1, verdictIn >= 0
-                    ? Value.ofDoubles(ORDER[quarter], inAir ? 1 : 0, probingLeg >= 0 ? attempt : 0)
-                    : Value.ofDoubles(ORDER[quarter], inAir ? 1 : 0));
+                    ? Value.ofDoubles(next, inAir ? 1 : 0, probingLeg >= 0 ? attempt : 0)
+                    : Value.ofDoubles(next, inAir ? 1 : 0));
         }
+    }
+
+    /**
+     * The first half of {@code settle}: the feet move smoothly from where the simulator set them down (the standing
+     * pose) to the gait's, {@code f} of the way, so the start does not jolt the body.
+     */
+    private void fromStandingPose(double f) {
+        double w = f * f * (3 - 2 * f);
+        double standZ = -(standingHeight() - FOOT_RADIUS);
+        for (int leg = 0; leg < LEGS; leg++) {
+            feet[3 * leg] = home[3 * leg] + (feet[3 * leg] - home[3 * leg]) * w;
+            feet[3 * leg + 1] = home[3 * leg + 1] + (feet[3 * leg + 1] - home[3 * leg + 1]) * w;
+            feet[3 * leg + 2] = standZ + (feet[3 * leg + 2] - standZ) * w;
+        }
+    }
+
+    /**
+     * The end of {@code settle} in which the phase already names the first leg to lift, so the balance has the body
+     * over the other three before it lifts: a second, or half the settling if that is shorter.
+     */
+    private double preShift() {
+        return Math.min(1, settle / 2);
     }
 
     /** With probing, a swing that reached its touchdown in this period stops there and a probe attempt starts. */

@@ -3,6 +3,7 @@ package org.fdnet.roq.node;
 import static org.fdnet.roq.sim.RoqGeometry.LEGS;
 
 import java.util.Locale;
+import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.runtime.NodeParameters;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
@@ -44,8 +45,22 @@ public class HoldCourse extends Relation {
     private double lastSeconds = Double.NaN;
     /** The gyro's yaw-rate bias learnt so far, rad/s. */
     private double gyroBias;
-    /** How long the gyro's bias takes to learn from the feet, s. */
-    private static final double BIAS_TIME = 20;
+    /** How long the gyro's bias takes to learn from the feet, s (0: not learnt from them). */
+    private double biasTime;
+    /** How long RoQ stands at the start (the gait's {@code settle}), s: the gyro's bias is its mean rate then. */
+    private double calibrate;
+    private double firstSeconds = Double.NaN;
+    /** While RoQ stands still: the gyro's turn and the time, summed. */
+    private double standingGyro;
+    private double standingTime;
+    /** The newest gyro snapshot's tick integrated, its heading rate, and the turn and time integrated since the last
+     * firing that acted. */
+    private long gyroTick;
+    private double lastRate = Double.NaN;
+    private double gyroSum;
+    private double gyroTime;
+    /** How long the heading took the gyro's uncorrected rate while RoQ stood, s. */
+    private double settled;
 
     @Override
     protected void init(NodeParameters p) {
@@ -58,6 +73,14 @@ public class HoldCourse extends Relation {
         gain = p.doubleValue("gain", 0.8);
         maxHeading = p.doubleValue("maxHeading", 0.35);
         maxTurn = p.doubleValue("maxTurn", 0.25);
+        biasTime = p.doubleValue("biasTime", 20);
+        calibrate = p.doubleValue("calibrate", 0);
+        if (biasTime != 0 && (biasTime < 1 || biasTime > 1000)) {
+            throw p.invalid("biasTime", "must be 0 (off) or lie between 1 and 1000 s, was " + biasTime);
+        }
+        if (calibrate < 0 || calibrate > 30) {
+            throw p.invalid("calibrate", "must lie between 0 and 30 s, was " + calibrate);
+        }
         if (contact <= 0) {
             throw p.invalid("contact", "must be more than 0 N, was " + contact);
         }
@@ -79,21 +102,36 @@ public class HoldCourse extends Relation {
             return;
         }
         double seconds = c.seconds();
+        if (Double.isNaN(firstSeconds)) {
+            firstSeconds = seconds;
+        }
+        boolean calibrating = seconds - firstSeconds < calibrate;
+        integrateGyro(c);
         if (!Double.isNaN(lastSeconds) && seconds - lastSeconds < KeepBalance.STEP) {
             return; // the joint angles change every tick: act on them every 10 ms
         }
         double dt = Double.isNaN(lastSeconds) ? 0 : seconds - lastSeconds;
         lastSeconds = seconds;
-        Value gyro = SensedFeet.named(c, "imu gyro");
-        Value attitude = SensedFeet.named(c, "attitude");
-        double gyroTurn = Double.NaN;
-        if (gyro != null && gyro.length() >= 3 && attitude != null && attitude.length() >= 2) {
-            // the heading's rate from the body-frame rates: (sin roll * q + cos roll * r) / cos pitch
-            double roll = attitude.element(0);
-            double rate = (Math.sin(roll) * gyro.element(1) + Math.cos(roll) * gyro.element(2))
-                    / Math.cos(attitude.element(1));
-            gyroTurn = (rate - gyroBias) * dt;
+        if (gyroTime == 0 && !Double.isNaN(lastRate)) {
+            // values without a snapshot's tick: sample the rate once per firing
+            gyroSum = lastRate * dt;
+            gyroTime = dt;
         }
+        double rawTurn = gyroTime > 0 ? gyroSum : Double.NaN;
+        double rawTime = gyroTime;
+        gyroSum = 0;
+        gyroTime = 0;
+        if (calibrating) {
+            standStill(seconds - firstSeconds >= calibrate / 2, rawTurn, rawTime, swinging(c));
+            put(c, "steer", Value.ofDoubles(0));
+            return;
+        }
+        if (standingTime > 0) {
+            gyroBias = standingGyro / standingTime;
+            heading -= gyroBias * settled;
+            standingTime = 0;
+        }
+        double gyroTurn = Double.isNaN(rawTurn) ? Double.NaN : rawTurn - gyroBias * rawTime;
         if (haveBefore) {
             odometry(swinging(c), gyroTurn, dt);
             // dead reckoning along the heading at the crawl's speed: the feet slip too much under the body's sway
@@ -101,12 +139,7 @@ public class HoldCourse extends Relation {
             x += speed * dt * Math.cos(heading);
             y += speed * dt * Math.sin(heading);
         }
-        System.arraycopy(now.position, 0, before, 0, before.length);
-        int swinging = swinging(c);
-        for (int leg = 0; leg < LEGS; leg++) {
-            loaded[leg] = now.force[leg] > contact && leg != swinging;
-        }
-        haveBefore = true;
+        keepFeet(swinging(c));
         double wished = clamp(-trackGain * y, maxHeading);
         double turn = clamp(gain * (wished - heading), maxTurn);
         put(c, "steer", Value.ofDoubles(turn));
@@ -116,10 +149,34 @@ public class HoldCourse extends Relation {
     }
 
     /**
-     * The body's turn and move since the last firing, from the feet loaded then and now: the best rigid motion of
-     * their body-frame positions (2-D Procrustes), reversed. {@code gyroTurn}: the gyro's turn, or NaN.
+     * The heading's turn since the last firing: the gyro's ({@code gyroTurn}, NaN without one), its bias learnt
+     * from the feet's turn; the feet's alone without a gyro.
      */
     private void odometry(int swinging, double gyroTurn, double dt) {
+        double feetTurn = feetTurn(swinging);
+        if (Double.isNaN(feetTurn)) {
+            if (!Double.isNaN(gyroTurn)) {
+                heading += gyroTurn;
+            }
+            return;
+        }
+        double turn = feetTurn;
+        if (!Double.isNaN(gyroTurn)) {
+            // the gyro turns with the body whatever the feet do (they slip); its bias is learnt slowly from the
+            // feet's turn, which has no bias but slips
+            if (biasTime > 0) {
+                gyroBias += (gyroTurn - feetTurn) / biasTime;
+            }
+            turn = gyroTurn;
+        }
+        heading += turn;
+    }
+
+    /**
+     * The body's turn since the last firing by the feet loaded then and now (at least two): the best rotation of
+     * their body-frame positions (2-D Procrustes), reversed; NaN with fewer than two.
+     */
+    private double feetTurn(int swinging) {
         double bx = 0;
         double by = 0;
         double nx = 0;
@@ -135,10 +192,7 @@ public class HoldCourse extends Relation {
             }
         }
         if (n < 2) {
-            if (!Double.isNaN(gyroTurn)) {
-                heading += gyroTurn;
-            }
-            return;
+            return Double.NaN;
         }
         bx /= n;
         by /= n;
@@ -156,15 +210,74 @@ public class HoldCourse extends Relation {
                 dot += ax * qx + ay * qy;
             }
         }
-        double feetTurn = -Math.atan2(cross, dot);
-        double turn = feetTurn;
-        if (!Double.isNaN(gyroTurn)) {
-            // the gyro turns with the body whatever the feet do (they slip); its bias is learnt slowly from the
-            // feet's turn, which has no bias but slips
-            gyroBias += (gyroTurn - feetTurn) / BIAS_TIME;
-            turn = gyroTurn;
+        return -Math.atan2(cross, dot);
+    }
+
+    /**
+     * Integrates the gyro's heading rate over every snapshot the network was given (each held until the next, by the
+     * snapshots' ticks), not once per firing: the body's yaw rate shakes at many hertz, and sampling it every 10 ms
+     * adds a random walk to the heading.
+     */
+    private void integrateGyro(RelationContext c) {
+        Value gyro = SensedFeet.named(c, "imu gyro");
+        double rate = headingRate(c);
+        if (Double.isNaN(rate)) {
+            return;
         }
-        heading += turn;
+        long tick = gyro.tick();
+        if (tick <= 0) {
+            lastRate = rate; // no snapshot's tick: compute() samples it per firing
+            return;
+        }
+        if (tick <= gyroTick) {
+            return;
+        }
+        if (gyroTick > 0) {
+            double step = (tick - gyroTick) * RoqGeometry.TIMESTEP;
+            gyroSum += lastRate * step;
+            gyroTime += step;
+        }
+        gyroTick = tick;
+        lastRate = rate;
+    }
+
+    /**
+     * While RoQ stands (the gait's {@code settle}): the heading takes the gyro's whole turn. In the second half
+     * ({@code still}), when the body has settled, the gyro's mean rate is its bias; it is taken off the turn over the
+     * whole settling when walking starts. (The body still creeps about 2 mrad/s then, as the balance holds it over
+     * three feet, and that goes into the bias; taking the feet's turn off it made it worse, measured.)
+     */
+    private void standStill(boolean still, double rawTurn, double rawTime, int swinging) {
+        if (!Double.isNaN(rawTurn)) {
+            heading += rawTurn;
+            settled += rawTime;
+            if (still) {
+                standingGyro += rawTurn;
+                standingTime += rawTime;
+            }
+        }
+        keepFeet(swinging);
+    }
+
+    /** Keeps the feet's positions and which bear load, for the next firing's odometry. */
+    private void keepFeet(int swinging) {
+        System.arraycopy(now.position, 0, before, 0, before.length);
+        for (int leg = 0; leg < LEGS; leg++) {
+            loaded[leg] = now.force[leg] > contact && leg != swinging;
+        }
+        haveBefore = true;
+    }
+
+    /** The heading's rate from the gyro's body-frame rates turned by the attitude, rad/s, or NaN without them. */
+    private static double headingRate(RelationContext c) {
+        Value gyro = SensedFeet.named(c, "imu gyro");
+        Value attitude = SensedFeet.named(c, "attitude");
+        if (gyro == null || gyro.length() < 3 || attitude == null || attitude.length() < 2) {
+            return Double.NaN;
+        }
+        // (sin roll * q + cos roll * r) / cos pitch
+        double roll = attitude.element(0);
+        return (Math.sin(roll) * gyro.element(1) + Math.cos(roll) * gyro.element(2)) / Math.cos(attitude.element(1));
     }
 
     /** The leg the gait's phase (the Data named {@code gait phase}) has in the air or probing, else -1. */

@@ -38,7 +38,7 @@ class RoqCoursesTest {
     /** Rubble seeds besides the built-in course's 2004. */
     private static final long[] SEEDS = {11, 12, 13, 14};
 
-    /** Simulated seconds of the heading runs: about 2 m of rubble. */
+    /** Simulated seconds of the heading runs: about 3 m of rubble (5 s of them standing while the gyro settles). */
     private static final int HEADING_SECONDS = 70;
     private static final String HELD = "roq-rubble rubble 12, 70 s";
     private static final String UNHELD = "roq-rubble rubble 12, 70 s, module Course unloaded";
@@ -123,20 +123,20 @@ class RoqCoursesTest {
     @Test
     void shouldWalkLevelGroundOnItsLine() throws Exception {
         SoftAssertions soft = new SoftAssertions();
-        // measured 1.02 and 1.48 m in 40 s
+        // measured 1.03 and 1.88 m in 40 s (roq-rubble's 5 s of settling included)
         holds(soft, run("roq-walk flat"), 0.8, LEVEL_TILT);
-        holds(soft, run("roq-rubble flat"), 1.15, LEVEL_TILT);
+        holds(soft, run("roq-rubble flat"), 1.5, LEVEL_TILT);
         soft.assertAll();
     }
 
     @Test
     void shouldClimbAndDescendSlopesUpToFifteenDegrees() throws Exception {
         SoftAssertions soft = new SoftAssertions();
-        // measured 1.23 m (the built-in course: 1 m of level ground first), 0.62 m (0.2 m of it up the 15° incline)
-        // and 1.45 m down
-        holds(soft, run("roq-rubble slope (built-in, 10 up)"), 0.95, Math.toRadians(10) + SLOPE_TILT);
-        holds(soft, run("roq-rubble slope 15 up"), 0.45, Math.toRadians(15) + SLOPE_TILT);
-        holds(soft, run("roq-rubble slope 15 down"), 1.1, Math.toRadians(15) + SLOPE_TILT);
+        // measured 1.54 m (the built-in course: 1 m of level ground first), 1.16 m (0.75 m of it up the 15° incline)
+        // and 1.90 m down
+        holds(soft, run("roq-rubble slope (built-in, 10 up)"), 1.2, Math.toRadians(10) + SLOPE_TILT);
+        holds(soft, run("roq-rubble slope 15 up"), 0.9, Math.toRadians(15) + SLOPE_TILT);
+        holds(soft, run("roq-rubble slope 15 down"), 1.5, Math.toRadians(15) + SLOPE_TILT);
         soft.assertAll();
     }
 
@@ -147,9 +147,9 @@ class RoqCoursesTest {
         for (long seed : SEEDS) {
             labels.add("roq-rubble rubble " + seed);
         }
-        // measured 1.23, 1.00, 0.98, 1.05, 1.17 m (seeds 2004, 11–14): median 1.05, the threshold 24 % below it
+        // measured 1.71, 1.51, 1.68, 1.71, 1.69 m (seeds 2004, 11–14): median 1.69, the threshold 23 % below it
         for (String label : labels) {
-            holds(soft, run(label), 0.8, LEVEL_TILT);
+            holds(soft, run(label), 1.3, LEVEL_TILT);
         }
         soft.assertAll();
     }
@@ -157,10 +157,13 @@ class RoqCoursesTest {
     @Test
     void shouldCrossFragileCellsBreakingThemOnlyWithAProbe() throws Exception {
         SoftAssertions soft = new SoftAssertions();
-        // measured 1.21 m (1 crust broken by a probe) and 1.23 m (2, and 1 under a loaded foot: issue #19 asks for
-        // none, which does not hold reliably — a foothold accepted on a crust's corner; docs/roq-networks.md)
-        holds(soft, run("roq-rubble fragile"), 0.9, LEVEL_TILT, 1);
-        holds(soft, run("roq-rubble crossing"), 0.9, LEVEL_TILT, 1);
+        // measured 1.75 m (1 crust broken under a loaded foot) and 1.67 m (4 broken by probes, none under a loaded
+        // foot here; 1-4 per 100 s crossing on noise seeds 1, 2, 3, 31).
+        // Issue #19 asks for none under a loaded foot, which does NOT hold: a foothold accepted on a crust's edge,
+        // partly on the ground beside it, bears the probe's 55 N and later breaks under the three-foot load. The
+        // longer stride (0.3 m, for the demo's 4 cm/s) made it more frequent (docs/roq-networks.md)
+        holds(soft, run("roq-rubble fragile"), 1.35, LEVEL_TILT, 2);
+        holds(soft, run("roq-rubble crossing"), 1.3, LEVEL_TILT, 2);
         soft.assertAll();
     }
 
@@ -168,9 +171,11 @@ class RoqCoursesTest {
     void shouldStayCloserToItsCourseLineWithModuleCourseThanWithout() throws Exception {
         CourseRun held = run(HELD);
         CourseRun unheld = run(UNHELD);
-        // measured over ~2 m: 0.42 m with Course, 1.02 m without (before the bridge's session-4 changes 0.13 and 0.28)
-        assertThat(held.distance()).as(held + ": metres walked").isGreaterThan(1.5);
+        // measured over 3.0 m: off the line 0.135 m with Course, 0.482 m without (bench roq --part heading: 0.28×,
+        // and 0.32× and 0.55× on seeds 2004 and 13); over shorter runs the drift without Course is too small to tell
+        assertThat(held.distance()).as(held + ": metres walked").isGreaterThan(2.2);
         assertThat(held.trackError()).as(held + " against " + unheld + ": off the course line, cycle mean, m")
                 .isLessThan(0.75 * unheld.trackError());
+        assertThat(held.trackError()).as(held + ": off the course line, cycle mean, m").isLessThan(MAX_TRACK);
     }
 }

@@ -116,15 +116,15 @@ class RoqRubbleTest {
     }
 
     /**
-     * Flat ground with a fragile cell (40 N) right where the first swung foot, hind-right, comes down: roq-rubble's
-     * stride 0.2 m ahead of where it stands, 0.30 m right of the centre line (its stance).
+     * Flat ground with a fragile cell (40 N) right where the first swung foot, front-right (roq-rubble's crawl settles,
+     * then starts with it), comes down: half its stride (0.3 m) ahead of where it stands, 0.30 m right of the centre line (its stance).
      */
     private static Course cellUnderTheFirstFoothold() {
         double[] foot = new double[3];
-        RoqGeometry.footInBody(3, RoqGeometry.STANDING_POSE[0], RoqGeometry.STANDING_POSE[1],
+        RoqGeometry.footInBody(1, RoqGeometry.STANDING_POSE[0], RoqGeometry.STANDING_POSE[1],
                 RoqGeometry.STANDING_POSE[2], foot);
         Course flat = Course.flat();
-        double stride = 0.2;
+        double stride = 0.3;
         double stance = 0.30;
         return flat.withFragileCells(List.of(new FragileCell(flat.startX() + foot[0] + stride / 2,
                 flat.startY() - stance, 0.24, 0.24, 0.03, 40)));

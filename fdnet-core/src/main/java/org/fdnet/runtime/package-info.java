@@ -3,7 +3,7 @@
  * {@link org.fdnet.runtime.SensorData}, {@link org.fdnet.runtime.Relation},
  * {@link org.fdnet.runtime.RelationContext}, {@link org.fdnet.runtime.Value}), the Servants a Relation reshapes
  * the network with ({@link org.fdnet.runtime.Servants}), the engine that runs a
- * {@link org.fdnet.netinfo.NetworkInfo} ({@link org.fdnet.runtime.RuntimeNetwork}), and the one surface
+ * {@link org.fdnet.netinfo.NetworkInfo} ({@link org.fdnet.runtime.engine.RuntimeNetwork}), and the one surface
  * everybody else acts through ({@link org.fdnet.runtime.Controller}).
  *
  * <p>The Servants live in this package, not a sub-package: a Relation's context hands them out
@@ -43,7 +43,7 @@
  *
  * <h2>Seams for distribution (Part 3)</h2>
  * <ol>
- * <li><b>Placement</b> — {@link org.fdnet.runtime.RuntimeOptions#placement(Placement)} with a
+ * <li><b>Placement</b> — {@link org.fdnet.runtime.engine.RuntimeOptions#placement(Placement)} with a
  *     {@link org.fdnet.runtime.Placement} decides which nodes this process instantiates. Default
  *     {@link org.fdnet.runtime.Placement#all()}; {@link org.fdnet.runtime.Placement#thisHost()} keeps nodes whose
  *     {@code host} is localhost, 127.0.0.1, ::1, empty or this machine's name;

@@ -18,7 +18,7 @@ import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.runtime.Placement;
-import org.fdnet.runtime.RuntimeOptions;
+import org.fdnet.runtime.engine.RuntimeOptions;
 
 /**
  * A network deployed over its hosts: this process becomes a host itself (for the {@code localhost} nodes),

@@ -2,7 +2,7 @@ package org.fdnet.corba;
 
 import java.nio.file.Path;
 import java.util.List;
-import org.fdnet.runtime.RuntimeOptions;
+import org.fdnet.runtime.engine.RuntimeOptions;
 import org.fdnet.runtime.loading.ClassLoadingPolicy;
 
 /** Chooses the engine behind a host: the one place that knows which {@link LocalNetwork} a host runs. */

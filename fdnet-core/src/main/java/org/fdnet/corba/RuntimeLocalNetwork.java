@@ -24,12 +24,12 @@ import org.fdnet.runtime.Controller;
 import org.fdnet.runtime.NetworkEdit;
 import org.fdnet.runtime.Placement;
 import org.fdnet.runtime.RemoteLink;
-import org.fdnet.runtime.RuntimeNetwork;
-import org.fdnet.runtime.RuntimeOptions;
-import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.runtime.ServantRegistry;
 import org.fdnet.runtime.Value;
 import org.fdnet.runtime.WholeNetwork;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeOptions;
+import org.fdnet.runtime.engine.RuntimeStartException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

@@ -7,7 +7,7 @@ import org.fdnet.corba.DistributedRun;
 import org.fdnet.corba.control.ControlPublication;
 import org.fdnet.corba.control.DistributedLiveNetwork;
 import org.fdnet.runtime.NetworkControl;
-import org.fdnet.runtime.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 
 /** A run over several hosts: a {@link DistributedRun} whose control object is registered in its naming service. */
 final class DistributedTarget implements RunTarget {

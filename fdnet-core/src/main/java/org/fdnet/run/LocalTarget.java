@@ -9,8 +9,8 @@ import org.fdnet.corba.control.ControlPublication;
 import org.fdnet.event.client.CommitReport;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.runtime.NetworkControl;
-import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.cli.SimulatedPlant;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 
 /** A run on this machine alone: one engine, maybe joined to a simulated plant, recorded by one logger client. */
 final class LocalTarget implements RunTarget {

@@ -28,12 +28,12 @@ import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.NetworkControl;
 import org.fdnet.runtime.RelationStatus;
-import org.fdnet.runtime.RuntimeNetwork;
-import org.fdnet.runtime.RuntimeOptions;
-import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.runtime.cli.ControlCommands;
 import org.fdnet.runtime.cli.SimulatedPlant;
 import org.fdnet.runtime.cli.ValueAssignment;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeOptions;
+import org.fdnet.runtime.engine.RuntimeStartException;
 import org.fdnet.runtime.loading.ClassLoadingPolicy;
 
 /**

@@ -14,8 +14,8 @@ import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.Controller;
 import org.fdnet.runtime.RelationState;
 import org.fdnet.runtime.RelationStatus;
-import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.Value;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 
 /**
  * The summary a run prints at its end, of this process's engine: firings, values and events, events by kind,

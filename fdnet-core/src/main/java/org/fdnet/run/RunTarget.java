@@ -5,7 +5,7 @@ import java.util.Map;
 import org.fdnet.control.LiveNetwork;
 import org.fdnet.corba.control.ControlPublication;
 import org.fdnet.runtime.NetworkControl;
-import org.fdnet.runtime.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 
 /**
  * What a {@link NetworkRun} runs on: this process's engine alone ({@link LocalTarget}) or a deployment over

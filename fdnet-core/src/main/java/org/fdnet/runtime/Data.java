@@ -71,10 +71,19 @@ public abstract class Data {
         this.port = newPort;
     }
 
-    /** What a Data sees of the engine: its current value and a way in for outside values. */
-    interface DataPort {
+    /**
+     * What a Data sees of the engine: its current value and a way in for outside values. The engine implements it
+     * ({@code org.fdnet.runtime.engine}); node authors never do.
+     */
+    public interface DataPort {
         Value current();
 
         void publish(Value value);
+
+        /**
+         * Publishes {@code values[i]} into {@code ports[i]} in one commit, as {@link SensorData#pushTogether}
+         * documents (null ports and values, and ports of Datas no longer running, are left out).
+         */
+        void publishTogether(DataPort[] ports, Value[] values);
     }
 }

@@ -22,19 +22,16 @@ public abstract class SensorData extends Data {
      *                                  (nothing is written then)
      */
     public static void pushTogether(SensorData[] sensors, Value[] values) {
-        DataNode[] nodes = new DataNode[sensors.length];
-        Dataflow flow = null;
+        DataPort[] ports = new DataPort[sensors.length];
+        DataPort any = null;
         for (int i = 0; i < sensors.length; i++) {
-            if (sensors[i] != null && sensors[i].port() instanceof DataNode n && n.alive) {
-                if (flow != null && n.flow() != flow) {
-                    throw new IllegalArgumentException("pushTogether: " + n.ref + " belongs to another network");
-                }
-                flow = n.flow();
-                nodes[i] = n;
+            if (sensors[i] != null && sensors[i].port() != null) {
+                ports[i] = sensors[i].port();
+                any = ports[i];
             }
         }
-        if (flow != null) {
-            flow.commit(null, nodes, values);
+        if (any != null) {
+            any.publishTogether(ports, values);
         } else {
             java.util.Arrays.fill(values, null);
         }

@@ -6,11 +6,11 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 
 /**
- * What the Servants read and change: this engine alone ({@link EngineScope}), or the whole network over every
- * host ({@link WholeNetworkScope}). Each query takes one {@link WholeNetwork.Snapshot} and answers from it, so a
- * Visitor's search reads the network once.
+ * What the Servants read and change: this engine alone ({@code engine.EngineScope}), or the whole network over every
+ * host ({@code engine.WholeNetworkScope}). Each query takes one {@link WholeNetwork.Snapshot} and answers from it, so
+ * a Visitor's search reads the network once. The engine implements it; node authors never do.
  */
-interface ServantScope {
+public interface ServantScope {
     WholeNetwork.Snapshot snapshot();
 
     /** Answers {@code query} from the definition now, without a copy where it can (one engine reads under its lock). */

@@ -22,28 +22,20 @@ public final class Servants {
     private final ServantRegistry registry;
     private final BooleanSupplier selfRuns;
 
-    /** Servants of one engine: they see and change that engine's network. */
-    public Servants(RuntimeNetwork network, NodeRef self, int selfId) {
-        this(network, self, selfId, null);
-    }
-
     /**
-     * Servants of a host's Relation in a network over several hosts: with {@code whole} they see and reshape every
-     * host's nodes; with {@code null}, this engine's only.
+     * Servants of Relation {@code self} (the engine makes them, {@code engine.EngineServants}): {@code controller}
+     * names it as the source of its changes, {@code scope} is what they see (its engine, or the whole network over
+     * every host), {@code registry} its engine's servant tree, {@code selfRuns} whether it still runs (its servants go
+     * with it).
      */
-    public Servants(RuntimeNetwork network, NodeRef self, int selfId, WholeNetwork whole) {
-        this(network, self, selfId, whole, () -> true);
-    }
-
-    /** As above, for a Relation instance: {@code selfRuns} says whether it still runs (its servants go with it). */
-    public Servants(RuntimeNetwork network, NodeRef self, int selfId, WholeNetwork whole, BooleanSupplier selfRuns) {
+    public Servants(NodeRef self, Controller controller, ServantScope scope, ServantRegistry registry,
+            BooleanSupplier selfRuns) {
         this.selfRuns = selfRuns;
         this.self = self;
-        this.controller = network.controllerFor(selfId);
-        EngineScope engine = new EngineScope(network, controller);
-        this.scope = whole == null ? engine : new WholeNetworkScope(engine, whole);
+        this.controller = controller;
+        this.scope = scope;
         this.reflect = new Reflect(scope);
-        this.registry = network.servantRegistry();
+        this.registry = registry;
     }
 
     /** The Relation these servants work for. */

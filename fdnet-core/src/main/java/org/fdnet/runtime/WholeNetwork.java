@@ -7,7 +7,7 @@ import org.fdnet.netinfo.NodeRef;
 
 /**
  * The whole of a network that runs over several hosts, as the Servants of one host's Relations see and reshape it.
- * The distribution layer installs one on each host's engine ({@link org.fdnet.runtime.RuntimeNetwork#seeWholeNetwork});
+ * The distribution layer installs one on each host's engine ({@code engine.RuntimeNetwork#seeWholeNetwork});
  * without one, Servants see their own engine only. Every call may cross the network: a snapshot that cannot be had
  * throws {@link IllegalStateException} with the reason; a change that cannot be made is refused with it.
  */

@@ -1,49 +1,27 @@
 /**
- * The FDNet runtime on one host: the programming model for node authors ({@link org.fdnet.runtime.Data},
+ * The FDNet runtime's public API: the programming model for node authors ({@link org.fdnet.runtime.Data},
  * {@link org.fdnet.runtime.SensorData}, {@link org.fdnet.runtime.Relation},
- * {@link org.fdnet.runtime.RelationContext}, {@link org.fdnet.runtime.Value}), the Servants a Relation reshapes
- * the network with ({@link org.fdnet.runtime.Servants}), the engine that runs a
- * {@link org.fdnet.netinfo.NetworkInfo} ({@link org.fdnet.runtime.RuntimeNetwork}), and the one surface
- * everybody else acts through ({@link org.fdnet.runtime.Controller}).
+ * {@link org.fdnet.runtime.RelationContext}, {@link org.fdnet.runtime.Value},
+ * {@link org.fdnet.runtime.NodeParameters}), the Servants a Relation reshapes the network with
+ * ({@link org.fdnet.runtime.Servants}), and the one surface everybody else acts through
+ * ({@link org.fdnet.runtime.Controller}). The engine that runs a {@link org.fdnet.netinfo.NetworkInfo}
+ * ({@code RuntimeNetwork}) is {@code org.fdnet.runtime.engine}, one layer up.
+ *
+ * <p>This package imports nothing of the engine (ArchitectureTest fails the build otherwise); it imports only
+ * {@code netinfo} and {@code event} (fdnet-api). Where the API must reach the engine, the engine implements an
+ * interface of this package: {@link org.fdnet.runtime.Data.DataPort} (a Data's current value, its pushes,
+ * {@link org.fdnet.runtime.SensorData#pushTogether}), {@link org.fdnet.runtime.ServantScope} (what the Servants
+ * read and change). The engine calls the authors' protected life-cycle methods through
+ * {@link org.fdnet.runtime.NodeLifecycle} and builds each Relation's Servants from their parts.
  *
  * <p>The Servants live in this package, not a sub-package: a Relation's context hands them out
  * ({@code RelationContext.servants()}) and they speak Values, ChangeOutcomes and NetworkEdits, so the two are one
- * API; as two packages they were an import cycle. Everything above this package (library, loading, control,
- * corba, run, the tools) imports it; it imports only {@code netinfo} and {@code event} (fdnet-api).
- *
- * <h2>Flow of one value</h2>
- * <pre>
- *   setValue / SensorData.push / a Relation's firing
- *        │  convert to the Data's type, Data.accept (outside any lock)
- *        ▼
- *   commit lock ─ stamp (EventClock) ─ store ─ DataValueObservers ─ DataValueEvent ─▶ EventSinks
- *        │  (all outputs of one firing under one lock: readers never see half of it)
- *        ▼
- *   each Relation it triggers (not the writer itself) ── IDLE→QUEUED ──▶ Scheduler
- *        ├─ on this thread, after the current firing (run-to-completion, ~0.2 µs a hop)
- *        └─ on the bounded worker pool (timer, budget spent, idle worker for parallel work)
- *   Relation fires: snapshot of its inputs (optimistic read of the commit lock) → compute → commit
- * </pre>
- * Each value carries a source tick ({@link org.fdnet.runtime.Value#tick()}): the sensor snapshot it came from,
- * set by the pusher; a firing's outputs get the newest tick of the inputs it read (one long per value, no
- * allocation unless it changes). {@link org.fdnet.runtime.SensorData#pushTogether} commits several sensors'
- * values under one lock, so no Relation sees half of one snapshot.
- *
- * <h2>Structure</h2>
- * <pre>
- *   Controller request (edit, parameter, load/unload/hold/resume, restart) — also from Servants
- *        │  structure lock; edit a COPY of the definition (refused → nothing changed)
- *        ▼
- *   StructurePlan (loaded modules × Placement) → construct new nodes (failure → refused)
- *        ▼
- *   commit: DISCONNECT, DESTROY, CREATE, CONNECT events; Rewiring; statuses
- *        ▼  after the lock
- *   new and rewired Relations fire once
- * </pre>
+ * API; as two packages they were an import cycle. Everything above this package (library, engine, loading, control,
+ * corba, run, the tools) imports it.
  *
  * <h2>Seams for distribution (Part 3)</h2>
  * <ol>
- * <li><b>Placement</b> — {@link org.fdnet.runtime.RuntimeOptions#placement(Placement)} with a
+ * <li><b>Placement</b> — {@code engine.RuntimeOptions#placement(Placement)} with a
  *     {@link org.fdnet.runtime.Placement} decides which nodes this process instantiates. Default
  *     {@link org.fdnet.runtime.Placement#all()}; {@link org.fdnet.runtime.Placement#thisHost()} keeps nodes whose
  *     {@code host} is localhost, 127.0.0.1, ::1, empty or this machine's name;

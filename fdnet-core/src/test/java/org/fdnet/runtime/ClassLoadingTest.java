@@ -12,6 +12,8 @@ import javax.tools.ToolProvider;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeOptions;
 import org.fdnet.runtime.loading.ClassLoadingPolicy;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;

@@ -12,6 +12,9 @@ import org.fdnet.event.DataValueEvent;
 import org.fdnet.event.MemoryEventSink;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.runtime.engine.DrivenClock;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeOptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

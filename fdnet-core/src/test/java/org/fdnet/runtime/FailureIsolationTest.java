@@ -6,6 +6,7 @@ import static org.fdnet.runtime.TestNetworks.*;
 import org.fdnet.event.MemoryEventSink;
 import org.fdnet.event.RelationValueEvent;
 import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

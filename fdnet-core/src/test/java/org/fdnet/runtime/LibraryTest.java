@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.within;
 import static org.fdnet.runtime.TestNetworks.*;
 
 import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

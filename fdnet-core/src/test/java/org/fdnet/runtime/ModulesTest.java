@@ -8,6 +8,7 @@ import org.fdnet.event.MemoryEventSink;
 import org.fdnet.event.NetworkCommand;
 import org.fdnet.event.NetworkCommandEvent;
 import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

@@ -6,6 +6,7 @@ import static org.fdnet.runtime.TestNetworks.*;
 import java.nio.file.Path;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.xml.NetworkRepository;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

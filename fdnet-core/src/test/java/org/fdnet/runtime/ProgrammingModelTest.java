@@ -10,6 +10,8 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.Parameter;
 import org.fdnet.netinfo.ParameterType;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeStartException;
 import org.fdnet.runtime.library.DoubleSensor;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;

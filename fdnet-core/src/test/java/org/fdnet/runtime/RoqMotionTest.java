@@ -6,6 +6,8 @@ import static org.fdnet.runtime.TestNetworks.ref;
 import java.nio.file.Path;
 import java.util.List;
 import org.fdnet.netinfo.xml.NetworkRepository;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeOptions;
 import org.fdnet.runtime.loading.ClassLoadingPolicy;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;

@@ -10,6 +10,7 @@ import org.fdnet.event.MemoryEventSink;
 import org.fdnet.event.RelationValueEvent;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.xml.NetworkRepository;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

@@ -12,6 +12,7 @@ import org.fdnet.netinfo.ConnectionKind;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.fdnet.runtime.library.DoubleSensor;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;

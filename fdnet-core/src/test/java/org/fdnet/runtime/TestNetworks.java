@@ -7,6 +7,9 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.Parameter;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeOptions;
+import org.fdnet.runtime.engine.RuntimeStartException;
 
 /** Small builders for the runtime's tests: networks are built in code, not read from files. */
 final class TestNetworks {

@@ -12,6 +12,7 @@ import static org.fdnet.runtime.TestNetworks.write;
 
 import java.util.concurrent.atomic.AtomicLong;
 import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.fdnet.runtime.library.DoubleSensor;
 import org.junit.jupiter.api.Test;
 

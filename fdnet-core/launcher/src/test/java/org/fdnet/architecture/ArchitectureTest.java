@@ -69,7 +69,9 @@ class ArchitectureTest {
         return layeredArchitecture().consideringOnlyDependenciesInLayers()
                 .layer("Api").definedBy(inModule("fdnet-core/api"))
                 .layer("Files").definedBy(inModulePackages(CORE, "org.fdnet.netinfo.xml..", "org.fdnet.logging"))
-                .layer("Runtime").definedBy(inModulePackages(CORE, "org.fdnet.runtime", "org.fdnet.runtime.library",
+                .layer("Runtime API").definedBy(inModulePackages(CORE, "org.fdnet.runtime"))
+                .layer("Nodes").definedBy(inModulePackages(CORE, "org.fdnet.runtime.library"))
+                .layer("Engine").definedBy(inModulePackages(CORE, "org.fdnet.runtime.engine",
                         "org.fdnet.runtime.loading"))
                 .layer("Control").definedBy(inModulePackages(CORE, "org.fdnet.control"))
                 .layer("Distribution").definedBy(inModulePackages(CORE, "org.fdnet.corba", "org.fdnet.corba.control",
@@ -84,16 +86,20 @@ class ArchitectureTest {
 
                 .whereLayer("Api").mayNotAccessAnyLayer()
                 .whereLayer("Files").mayOnlyAccessLayers("Api")
-                .whereLayer("Runtime").mayOnlyAccessLayers("Api")
-                .whereLayer("Control").mayOnlyAccessLayers("Api", "Runtime")
-                .whereLayer("Distribution").mayOnlyAccessLayers("Api", "Files", "Runtime", "Control")
-                .whereLayer("Commands").mayOnlyAccessLayers("Api", "Files", "Runtime", "Control", "Distribution")
+                .whereLayer("Runtime API").mayOnlyAccessLayers("Api")
+                .whereLayer("Nodes").mayOnlyAccessLayers("Api", "Runtime API")
+                .whereLayer("Engine").mayOnlyAccessLayers("Api", "Runtime API")
+                .whereLayer("Control").mayOnlyAccessLayers("Api", "Runtime API")
+                .whereLayer("Distribution").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine",
+                        "Control")
+                .whereLayer("Commands").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine", "Control",
+                        "Distribution")
                 .whereLayer("Logger").mayOnlyAccessLayers("Api")
                 .whereLayer("Viewer").mayOnlyAccessLayers("Api")
-                .whereLayer("Editor").mayOnlyAccessLayers("Api", "Files", "Runtime", "Control", "Distribution",
-                        "Commands", "Viewer")
-                .whereLayer("Simulator").mayOnlyAccessLayers("Api", "Files", "Runtime", "Control", "Distribution",
-                        "Commands", "Logger", "Viewer")
+                .whereLayer("Editor").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine", "Control",
+                        "Distribution", "Commands", "Viewer")
+                .whereLayer("Simulator").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine",
+                        "Control", "Distribution", "Commands", "Logger", "Viewer")
                 .whereLayer("Bench").mayNotBeAccessedByAnyLayer();
     }
 }

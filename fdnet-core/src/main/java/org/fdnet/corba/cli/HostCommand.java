@@ -11,7 +11,7 @@ import org.fdnet.corba.LinkFaults;
 import org.fdnet.corba.LinkSettings;
 import org.fdnet.corba.LocalNetworks;
 import org.fdnet.corba.RuntimeLocalNetwork;
-import org.fdnet.runtime.RuntimeOptions;
+import org.fdnet.runtime.engine.RuntimeOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;

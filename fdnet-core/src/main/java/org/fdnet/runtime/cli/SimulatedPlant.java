@@ -1,7 +1,7 @@
 package org.fdnet.runtime.cli;
 
 import java.io.PrintWriter;
-import org.fdnet.runtime.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 
 /**
  * A simulated plant {@code fdnet run FILE --sim COURSE} can join a running network to, found through

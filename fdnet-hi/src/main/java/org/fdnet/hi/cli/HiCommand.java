@@ -5,26 +5,26 @@ import java.nio.file.Path;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import javax.swing.SwingUtilities;
+import org.fdnet.control.LiveNetwork;
+import org.fdnet.control.NetworkUnreachableException;
+import org.fdnet.corba.control.RemoteLiveNetwork;
 import org.fdnet.hi.app.HiApplication;
 import org.fdnet.hi.app.HiWindow;
 import org.fdnet.hi.app.RecentFiles;
 import org.fdnet.hi.app.WindowScreenshot;
-import org.fdnet.control.LiveNetwork;
-import org.fdnet.control.NetworkUnreachableException;
-import org.fdnet.corba.control.RemoteLiveNetwork;
 import org.fdnet.hi.graph.GraphScene;
 import org.fdnet.hi.live.InProcessRun;
 import org.fdnet.hi.live.LiveNetworkFinder;
-import org.fdnet.netinfo.xml.NetworkFileException;
-import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.netinfo.xml.NetworkFileException;
+import org.fdnet.runtime.engine.RuntimeStartException;
 import org.fdnet.tls.TlsOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code fdnet hi [FILE]}: the graphical and text-based network editor. */
 @Command(name = "hi", mixinStandardHelpOptions = true,

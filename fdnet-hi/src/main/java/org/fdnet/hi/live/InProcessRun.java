@@ -7,9 +7,9 @@ import org.fdnet.control.LocalLiveNetwork;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.xml.NetworkFileException;
 import org.fdnet.netinfo.xml.NetworkRepository;
-import org.fdnet.runtime.RuntimeNetwork;
-import org.fdnet.runtime.RuntimeOptions;
-import org.fdnet.runtime.RuntimeStartException;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeOptions;
+import org.fdnet.runtime.engine.RuntimeStartException;
 import org.fdnet.runtime.loading.ClassLoadingPolicy;
 
 /**

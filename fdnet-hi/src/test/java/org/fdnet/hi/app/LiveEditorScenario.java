@@ -29,18 +29,18 @@ import javax.swing.SwingUtilities;
 import org.fdnet.control.LiveNetwork;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
-import org.fdnet.runtime.RuntimeOptions;
-import org.fdnet.logger.InProcessLogger;
-import org.fdnet.viewer.ui.ViewerWindow;
 import org.fdnet.hi.live.InProcessRun;
 import org.fdnet.hi.live.LiveTestNetwork;
 import org.fdnet.hi.live.RunningModulesPanel;
+import org.fdnet.logger.InProcessLogger;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.Parameter;
 import org.fdnet.netinfo.xml.LayoutRepository;
 import org.fdnet.netinfo.xml.NetworkRepository;
+import org.fdnet.runtime.engine.RuntimeOptions;
+import org.fdnet.viewer.ui.ViewerWindow;
 
 /**
  * The editor in live mode, driven like a user on a real display (run in a child JVM by {@link LiveEditorGuiTest})

@@ -10,8 +10,8 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.Parameter;
-import org.fdnet.runtime.RuntimeOptions;
-import org.fdnet.runtime.RuntimeStartException;
+import org.fdnet.runtime.engine.RuntimeOptions;
+import org.fdnet.runtime.engine.RuntimeStartException;
 
 /**
  * The network the live tests run in their own JVM: module Wave (a 50 ms sine into Wave/signal), main/Gain

@@ -3,8 +3,8 @@ package org.fdnet.roq.bridge;
 import java.util.Locale;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.roq.sim.SensorSnapshot;
-import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.Value;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 
 /**
  * Measures a run on a course by ground truth (allowed for measuring, never for control), sampled every 10 ms by

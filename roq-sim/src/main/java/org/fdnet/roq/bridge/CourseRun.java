@@ -12,11 +12,11 @@ import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.roq.sim.SimMode;
 import org.fdnet.roq.sim.SimOptions;
-import org.fdnet.runtime.DrivenClock;
-import org.fdnet.runtime.RuntimeNetwork;
-import org.fdnet.runtime.RuntimeOptions;
-import org.fdnet.runtime.RuntimeStartException;
 import org.fdnet.runtime.Value;
+import org.fdnet.runtime.engine.DrivenClock;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeOptions;
+import org.fdnet.runtime.engine.RuntimeStartException;
 
 /**
  * One stepped run of a RoQ network on a course with seeded sensor noise (as in the demo), measured by ground truth

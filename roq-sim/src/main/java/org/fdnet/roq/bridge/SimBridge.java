@@ -16,9 +16,9 @@ import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.runtime.ChangeListener;
-import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.SensorData;
 import org.fdnet.runtime.Value;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -33,7 +33,7 @@ import org.slf4j.LoggerFactory;
  * </pre>
  *
  * <ul>
- *   <li><b>Stepped</b> ({@link #stepped}): the network runs on a {@link org.fdnet.runtime.DrivenClock} started at
+ *   <li><b>Stepped</b> ({@link #stepped}): the network runs on a {@link org.fdnet.runtime.engine.DrivenClock} started at
  *   {@code startMicros}; {@link #run} alternates, on the caller's thread, {@code sim.step(cycleTicks)} →
  *   read the snapshot → feed the sensors → {@code network.advanceTo(start + tick ms)}. Nothing else runs, so a
  *   run is reproducible.</li>

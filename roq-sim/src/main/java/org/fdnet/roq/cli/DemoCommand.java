@@ -1,9 +1,15 @@
 package org.fdnet.roq.cli;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import javax.swing.SwingUtilities;
+import org.fdnet.control.LocalLiveNetwork;
+import org.fdnet.corba.cli.ControlOptions;
+import org.fdnet.corba.control.ControlPublication;
 import org.fdnet.event.client.ClientStatus;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
@@ -25,22 +31,16 @@ import org.fdnet.roq.sim.SimOptions;
 import org.fdnet.roq.view.DemoFigures;
 import org.fdnet.roq.view.RoqDemoPanel;
 import org.fdnet.roq.view.RoqDemoWindow;
-import org.fdnet.runtime.cli.DurationText;
-import javax.swing.SwingUtilities;
-import java.io.IOException;
-import java.time.Duration;
-import org.fdnet.runtime.RuntimeNetwork;
-import org.fdnet.runtime.RuntimeOptions;
-import org.fdnet.runtime.RuntimeStartException;
+import org.fdnet.run.NetworkRun;
 import org.fdnet.runtime.Value;
+import org.fdnet.runtime.cli.DurationText;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeOptions;
+import org.fdnet.runtime.engine.RuntimeStartException;
+import org.fdnet.tls.TlsOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
-import org.fdnet.control.LocalLiveNetwork;
-import org.fdnet.corba.cli.ControlOptions;
-import org.fdnet.corba.control.ControlPublication;
-import org.fdnet.run.NetworkRun;
-import org.fdnet.tls.TlsOptions;
 
 /**
  * {@code fdnet demo}: a RoQ network (default networks/roq-rubble.fdn on the crossing course) on the real-time simulator, joined by the

@@ -12,14 +12,14 @@ import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.event.RelationValueEvent;
 import org.fdnet.netinfo.ModuleInfo;
-import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeInfo;
+import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.roq.sim.LoopStatistics;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.roq.view.DemoFigures;
-import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.Value;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 
 /**
  * Measures a demo run from what the network itself says, without depending on its node classes:

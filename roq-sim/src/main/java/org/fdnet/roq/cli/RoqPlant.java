@@ -10,8 +10,8 @@ import org.fdnet.roq.sim.LoopStatistics;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.roq.sim.SimMode;
-import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.cli.SimulatedPlant;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 
 /**
  * RoQ's simulator for {@code fdnet run FILE --sim COURSE}: the real-time simulator joined to the running network

@@ -3,19 +3,19 @@ package org.fdnet.roq.bridge;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.file.Path;
+import java.util.List;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.xml.NetworkRepository;
-import java.util.List;
 import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.CourseLoader;
 import org.fdnet.roq.sim.FragileCell;
 import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SimMode;
-import org.fdnet.runtime.DrivenClock;
-import org.fdnet.runtime.RuntimeNetwork;
-import org.fdnet.runtime.RuntimeOptions;
 import org.fdnet.runtime.Value;
+import org.fdnet.runtime.engine.DrivenClock;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeOptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

@@ -8,9 +8,9 @@ import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SimMode;
-import org.fdnet.runtime.DrivenClock;
-import org.fdnet.runtime.RuntimeNetwork;
-import org.fdnet.runtime.RuntimeOptions;
+import org.fdnet.runtime.engine.DrivenClock;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeOptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 

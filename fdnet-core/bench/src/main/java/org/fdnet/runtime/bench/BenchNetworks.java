@@ -4,9 +4,9 @@ import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.runtime.RuntimeNetwork;
-import org.fdnet.runtime.RuntimeOptions;
-import org.fdnet.runtime.RuntimeStartException;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeOptions;
+import org.fdnet.runtime.engine.RuntimeStartException;
 import org.fdnet.runtime.loading.ClassLoadingPolicy;
 
 /** The benchmark's networks, built in code: a chain of n Relays and a fan-out of one Data to n Relays. */

@@ -7,9 +7,9 @@ import org.HdrHistogram.Histogram;
 import org.fdnet.event.EventSink;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.Controller;
-import org.fdnet.runtime.RuntimeNetwork;
-import org.fdnet.runtime.RuntimeOptions;
 import org.fdnet.runtime.Value;
+import org.fdnet.runtime.engine.RuntimeNetwork;
+import org.fdnet.runtime.engine.RuntimeOptions;
 
 /**
  * {@code fdnet bench core}: the in-process cost of FDNet's dataflow, each figure beside plain Java

@@ -8,8 +8,8 @@ import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.Push;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
-import org.fdnet.runtime.RuntimeNetwork;
 import org.fdnet.runtime.Value;
+import org.fdnet.runtime.engine.RuntimeNetwork;
 
 /**
  * One stepped, deterministic push trial: RoQ walks {@code network} (with some modules unloaded) on a course with

@@ -1,7 +1,12 @@
-package org.fdnet.runtime;
+package org.fdnet.runtime.engine;
 
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.Data;
+import org.fdnet.runtime.NodeLifecycle;
+import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.Relation;
+import org.fdnet.runtime.Value;
 import org.fdnet.runtime.loading.NodeClassException;
 import org.fdnet.runtime.loading.NodeClassResolver;
 
@@ -26,8 +31,8 @@ final class NodeFactory {
         Data data = (Data) construct(ref, info);
         NodeParameters params = NodeParameters.of(ref, info);
         try {
-            data.init(params);
-            Value initial = data.initialValue(params).convertTo(data.type());
+            NodeLifecycle.init(data, params);
+            Value initial = NodeLifecycle.initialValue(data, params).convertTo(data.type());
             return new PreparedData(data, initial);
         } catch (Exception e) {
             throw new NodeFailure(message(ref, info, e), e);
@@ -38,7 +43,7 @@ final class NodeFactory {
         Relation relation = (Relation) construct(ref, info);
         try {
             periodOf(ref, info);
-            relation.init(NodeParameters.of(ref, info));
+            NodeLifecycle.init(relation, NodeParameters.of(ref, info));
             return relation;
         } catch (Exception e) {
             throw new NodeFailure(message(ref, info, e), e);
@@ -47,7 +52,7 @@ final class NodeFactory {
 
     DataNode dataNode(int id, NodeRef ref, NodeInfo info, PreparedData prepared, boolean standIn) {
         DataNode node = new DataNode(id, ref, info, prepared.data(), standIn, flow);
-        prepared.data().bind(node);
+        NodeLifecycle.bind(prepared.data(), node);
         return node;
     }
 

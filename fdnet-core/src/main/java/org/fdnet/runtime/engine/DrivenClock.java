@@ -1,4 +1,4 @@
-package org.fdnet.runtime;
+package org.fdnet.runtime.engine;
 
 /**
  * Simulated time for a network run in steps: the driver (a simulator bridge, a test) moves it forward with

@@ -1,4 +1,4 @@
-package org.fdnet.runtime;
+package org.fdnet.runtime.engine;
 
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -12,6 +12,7 @@ import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.Placement;
 
 /**
  * What should be running for a definition, a set of loaded modules and a placement: the local nodes,

@@ -1,9 +1,13 @@
-package org.fdnet.runtime;
+package org.fdnet.runtime.engine;
 
 import java.util.Arrays;
 import org.fdnet.event.ValueType;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.Data;
+import org.fdnet.runtime.DataValueObserver;
+import org.fdnet.runtime.NodeLifecycle;
+import org.fdnet.runtime.Value;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -45,7 +49,7 @@ final class DataNode implements Data.DataPort {
     Value prepare(Value proposed) {
         try {
             Value converted = proposed.convertTo(type);
-            Value accepted = data.accept(converted);
+            Value accepted = NodeLifecycle.accept(data, converted);
             if (accepted == null || accepted.type() != type) {
                 throw new IllegalArgumentException(data.getClass().getName() + ".accept returned "
                         + (accepted == null ? "null" : "a " + accepted.type() + " value"));
@@ -95,6 +99,11 @@ final class DataNode implements Data.DataPort {
             return;
         }
         flow.write(this, v, null);
+    }
+
+    @Override
+    public void publishTogether(Data.DataPort[] ports, Value[] values) {
+        PushTogether.commit(ports, values);
     }
 
     @Override

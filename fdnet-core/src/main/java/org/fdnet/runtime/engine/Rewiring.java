@@ -1,4 +1,4 @@
-package org.fdnet.runtime;
+package org.fdnet.runtime.engine;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.Set;
 import org.fdnet.netinfo.ConnectionKind;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.RelationStatus;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

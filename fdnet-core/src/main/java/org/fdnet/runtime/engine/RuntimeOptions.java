@@ -1,9 +1,10 @@
-package org.fdnet.runtime;
+package org.fdnet.runtime.engine;
 
 import java.util.ArrayList;
 import java.util.List;
 import org.fdnet.event.EventClock;
 import org.fdnet.event.EventSink;
+import org.fdnet.runtime.Placement;
 import org.fdnet.runtime.loading.ClassLoadingPolicy;
 
 /**

@@ -1,4 +1,4 @@
-package org.fdnet.runtime;
+package org.fdnet.runtime.engine;
 
 import java.util.List;
 import java.util.concurrent.ScheduledFuture;
@@ -6,6 +6,10 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.NodeLifecycle;
+import org.fdnet.runtime.Relation;
+import org.fdnet.runtime.RelationState;
+import org.fdnet.runtime.RelationStatus;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -114,7 +118,7 @@ final class RelationNode {
         Wiring w = wiring;
         try {
             context.begin(w, periodicNow);
-            relation.compute(context);
+            NodeLifecycle.compute(relation, context);
             context.commit(w);
             firings++;
             flow.countFiring();
@@ -133,7 +137,7 @@ final class RelationNode {
         LOG.warn("{} FAILED; the rest of the network runs on", ref, cause);
         flow.reportState(this);
         try {
-            relation.close();
+            NodeLifecycle.close(relation);
         } catch (RuntimeException e) {
             LOG.warn("{}: close after failure failed", ref, e);
         }

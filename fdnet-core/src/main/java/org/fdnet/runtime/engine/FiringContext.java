@@ -1,9 +1,12 @@
-package org.fdnet.runtime;
+package org.fdnet.runtime.engine;
 
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.RelationContext;
+import org.fdnet.runtime.Servants;
+import org.fdnet.runtime.Value;
 
 /**
  * The {@link RelationContext} of one Relation, reused for each of its firings (a Relation never fires

@@ -1,4 +1,4 @@
-package org.fdnet.runtime;
+package org.fdnet.runtime.engine;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -26,6 +26,21 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.ChangeListener;
+import org.fdnet.runtime.ChangeOutcome;
+import org.fdnet.runtime.Controller;
+import org.fdnet.runtime.Data;
+import org.fdnet.runtime.DataValueObserver;
+import org.fdnet.runtime.NetworkEdit;
+import org.fdnet.runtime.NodeLifecycle;
+import org.fdnet.runtime.Relation;
+import org.fdnet.runtime.RelationStatus;
+import org.fdnet.runtime.RemoteLink;
+import org.fdnet.runtime.SensorData;
+import org.fdnet.runtime.ServantRegistry;
+import org.fdnet.runtime.Servants;
+import org.fdnet.runtime.Value;
+import org.fdnet.runtime.WholeNetwork;
 import org.fdnet.runtime.loading.NodeClassResolver;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -147,7 +162,7 @@ public final class RuntimeNetwork implements AutoCloseable {
     }
 
     private Servants servantsOf(RelationNode node) {
-        return new Servants(this, node.ref, node.id, wholeNetwork,
+        return EngineServants.of(this, node.ref, node.id, wholeNetwork,
                 () -> node.alive && node.status != RelationStatus.FAILED && relations.get(node.ref) == node);
     }
 
@@ -267,7 +282,7 @@ public final class RuntimeNetwork implements AutoCloseable {
         }
         for (SensorData s : toStart) {
             try {
-                s.start();
+                NodeLifecycle.start(s);
             } catch (RuntimeException e) {
                 LOG.warn("sensor {} failed to start", s, e);
             }
@@ -304,7 +319,7 @@ public final class RuntimeNetwork implements AutoCloseable {
             Prepared prepared = prepare(StructurePlan.of(candidate, loadedNext, options.placement()), Set.of());
             for (Relation r : prepared.relations().values()) {
                 try {
-                    r.close();
+                    NodeLifecycle.close(r);
                 } catch (RuntimeException e) {
                     LOG.warn("a Relation made only to check a change did not close cleanly", e);
                 }
@@ -526,7 +541,7 @@ public final class RuntimeNetwork implements AutoCloseable {
 
     private static void closeQuietly(RelationNode r) {
         try {
-            r.relation.close();
+            NodeLifecycle.close(r.relation);
         } catch (RuntimeException e) {
             LOG.warn("{}: close failed", r.ref, e);
         }
@@ -534,7 +549,7 @@ public final class RuntimeNetwork implements AutoCloseable {
 
     private static void stopQuietly(SensorData s) {
         try {
-            s.stop();
+            NodeLifecycle.stop(s);
         } catch (RuntimeException e) {
             LOG.warn("sensor {} failed to stop", s, e);
         }
@@ -717,7 +732,7 @@ public final class RuntimeNetwork implements AutoCloseable {
             stopQuietly(s);
         }
         try {
-            d.data.close();
+            NodeLifecycle.close(d.data);
         } catch (RuntimeException e) {
             LOG.warn("{}: close failed", d.ref, e);
         }

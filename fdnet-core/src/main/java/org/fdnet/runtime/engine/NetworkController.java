@@ -1,4 +1,4 @@
-package org.fdnet.runtime;
+package org.fdnet.runtime.engine;
 
 import java.util.ArrayList;
 import java.util.Collection;
@@ -11,6 +11,15 @@ import org.fdnet.netinfo.ModuleTree;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.ChangeListener;
+import org.fdnet.runtime.ChangeOutcome;
+import org.fdnet.runtime.Controller;
+import org.fdnet.runtime.DataValueObserver;
+import org.fdnet.runtime.NetworkEdit;
+import org.fdnet.runtime.NetworkEdits;
+import org.fdnet.runtime.RelationState;
+import org.fdnet.runtime.RemoteLink;
+import org.fdnet.runtime.Value;
 
 /**
  * The {@link Controller} of one {@link RuntimeNetwork}, on behalf of one event source: the controller

@@ -1,4 +1,4 @@
-package org.fdnet.runtime;
+package org.fdnet.runtime.engine;
 
 import java.util.Arrays;
 import org.fdnet.event.DataValueEvent;
@@ -11,6 +11,7 @@ import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.event.RelationValueEvent;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.Value;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

@@ -1,4 +1,4 @@
-package org.fdnet.runtime;
+package org.fdnet.runtime.engine;
 
 import java.time.Instant;
 import java.util.concurrent.TimeUnit;
@@ -6,6 +6,8 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.concurrent.locks.StampedLock;
 import java.util.function.Function;
+import org.fdnet.runtime.Servants;
+import org.fdnet.runtime.Value;
 
 /**
  * The hot path: snapshots, commits and run requests. Values move like this:

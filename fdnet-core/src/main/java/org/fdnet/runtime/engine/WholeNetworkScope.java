@@ -1,4 +1,4 @@
-package org.fdnet.runtime;
+package org.fdnet.runtime.engine;
 
 import java.util.List;
 import java.util.function.Function;
@@ -8,6 +8,13 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.runtime.ChangeOutcome;
+import org.fdnet.runtime.NetworkEdit;
+import org.fdnet.runtime.NodeDescription;
+import org.fdnet.runtime.RelationState;
+import org.fdnet.runtime.ServantScope;
+import org.fdnet.runtime.Value;
+import org.fdnet.runtime.WholeNetwork;
 
 /**
  * The Servants' view of a network over several hosts: definition, placement and changes come from the

@@ -30,7 +30,7 @@ final class TracePrinter implements EventSink {
             names.put(n.sourceId(), n.name());
             line = "named    #" + n.sourceId() + " " + n.kind().label() + " " + n.name();
         } else if (event instanceof DataValueEvent v) {
-            line = "value    " + name(v.sourceId()) + " = " + v.value();
+            line = "value    " + name(v.sourceId()) + " = " + v.value().text();
         } else if (event instanceof RelationValueEvent r) {
             line = "relation " + name(r.sourceId()) + " " + r.value();
         } else {

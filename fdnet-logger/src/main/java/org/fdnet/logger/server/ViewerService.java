@@ -7,7 +7,6 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import org.fdnet.event.NetworkEvent;
-import org.fdnet.logger.cache.CachedEvent;
 import org.fdnet.logger.cache.EventCache;
 import org.fdnet.logger.store.EventStore;
 import org.fdnet.logger.store.SourceDirectory;
@@ -24,8 +23,6 @@ import org.fdnet.logger.writer.BatchWriter;
 public final class ViewerService {
     private static final Comparator<NetworkEvent> TIME_ORDER =
             Comparator.comparingLong(NetworkEvent::time).thenComparingInt(NetworkEvent::sourceId);
-    private static final Comparator<CachedEvent> CACHED_TIME_ORDER =
-            Comparator.comparingLong(CachedEvent::time).thenComparingInt(CachedEvent::sourceId);
 
     private final EventCache cache;
     private final EventStore store;
@@ -48,28 +45,6 @@ public final class ViewerService {
 
     public EventCache cache() {
         return cache;
-    }
-
-    /**
-     * The answer from the cache alone, as the cached events (whose wire bytes a sender keeps and reuses), in
-     * time order; {@code null} when the cache does not hold every event of the range (then {@link #history}
-     * asks the database too).
-     */
-    public List<CachedEvent> fromCache(int[] sourceIds, long from, long to) {
-        if (sourceIds.length == 1) {
-            EventCache.CachedAnswer a = cache.cachedHistory(sourceIds[0], from, to, directory.seenFromStart(sourceIds[0]));
-            return a.complete() ? a.events() : null; // one node's timeline is already in time order
-        }
-        List<CachedEvent> all = new ArrayList<>();
-        for (int id : sourceIds) {
-            EventCache.CachedAnswer a = cache.cachedHistory(id, from, to, directory.seenFromStart(id));
-            if (!a.complete()) {
-                return null;
-            }
-            all.addAll(a.events());
-        }
-        all.sort(CACHED_TIME_ORDER);
-        return all;
     }
 
     public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws SQLException {

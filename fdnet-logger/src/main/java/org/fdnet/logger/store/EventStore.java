@@ -22,6 +22,7 @@ import org.fdnet.event.NetworkCommandEvent;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.event.RelationValueEvent;
+import org.fdnet.event.TypedValue;
 import org.fdnet.event.ValueType;
 import org.fdnet.event.wire.LoggedNode;
 import org.fdnet.logger.cache.CachedEvent;
@@ -29,6 +30,8 @@ import org.fdnet.logger.cache.RunProgress;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.postgresql.PGConnection;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 import org.postgresql.copy.CopyIn;
 import org.postgresql.copy.CopyManager;
 
@@ -39,6 +42,7 @@ import org.postgresql.copy.CopyManager;
  * committed sequence number. The other methods serve handshakes and viewers from a small pool.
  */
 public final class EventStore implements AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(EventStore.class);
     private static final Comparator<CachedEvent> KEY_ORDER =
             Comparator.comparingInt(CachedEvent::sourceId).thenComparingLong(CachedEvent::time);
 
@@ -134,7 +138,7 @@ public final class EventStore implements AutoCloseable {
             rows.clear();
             for (CachedEvent e : data) {
                 DataValueEvent d = (DataValueEvent) e.event();
-                rows.number(d.sourceId()).number(d.time()).text(d.value()).number(d.type().code()).endRow();
+                rows.number(d.sourceId()).number(d.time()).value(d.value()).number(d.type().code()).endRow();
             }
             copy(copy, rows, "COPY datavalue_log (sourceid, time, value, typevalue) FROM STDIN");
             sortByKey(relations);
@@ -397,6 +401,20 @@ public final class EventStore implements AutoCloseable {
                         new NodeRef(rs.getString(4), rs.getString(5))));
     }
 
+    /**
+     * A stored value's text read back as its type. A row this logger did not write may hold text that is not of
+     * its type: it is kept as a string (shown, not plotted) and named in the log rather than failing the query.
+     */
+    private static TypedValue storedValue(ValueType type, String text, int sourceId) {
+        try {
+            return TypedValue.parse(type, text);
+        } catch (IllegalArgumentException notOfItsType) {
+            LOG.warn("datavalue_log: source {} has a {} value that is not one ({}); shown as text", sourceId, type,
+                    notOfItsType.getMessage());
+            return TypedValue.of(text);
+        }
+    }
+
     /** The first id of a fresh block of {@link Schema#SOURCE_BLOCK} global source ids. */
     public int reserveSourceBlock() throws SQLException {
         return query("SELECT nextval('fdnet_sourceid_block')", rs -> (int) rs.getLong(1)).get(0);
@@ -414,8 +432,8 @@ public final class EventStore implements AutoCloseable {
                 bind(ps, ids, from, to);
                 try (ResultSet rs = ps.executeQuery()) {
                     while (rs.next()) {
-                        out.add(new DataValueEvent(rs.getInt(1), rs.getLong(2), ValueType.fromCode(rs.getInt(4)),
-                                rs.getString(3)));
+                        out.add(new DataValueEvent(rs.getInt(1), rs.getLong(2),
+                                storedValue(ValueType.fromCode(rs.getInt(4)), rs.getString(3), rs.getInt(1))));
                     }
                 }
             }

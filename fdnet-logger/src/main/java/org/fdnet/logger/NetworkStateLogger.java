@@ -13,6 +13,7 @@ import org.fdnet.logger.server.ViewerService;
 import org.fdnet.logger.store.DatabaseTarget;
 import org.fdnet.logger.store.EmbeddedDatabase;
 import org.fdnet.logger.store.EventStore;
+import org.fdnet.logger.store.QueryPriority;
 import org.fdnet.logger.store.SourceDirectory;
 import org.fdnet.logger.writer.BatchWriter;
 import org.fdnet.logger.writer.WriterSettings;
@@ -72,7 +73,8 @@ public final class NetworkStateLogger implements AutoCloseable {
             } else {
                 target = new DatabaseTarget(config.jdbcUrl(), config.databaseUser(), config.databasePassword());
             }
-            store = new EventStore(target);
+            QueryPriority queries = new QueryPriority(config.queryPauseMillis());
+            store = new EventStore(target, queries);
             store.createSchema();
             directory = new SourceDirectory(store);
             directory.load();
@@ -81,8 +83,8 @@ public final class NetworkStateLogger implements AutoCloseable {
             writer = new BatchWriter(WriterSettings.of(config), cache, store, directory, this::giveUp);
             writerThread = new Thread(writer, "fdnet-logger-writer");
             writerThread.start();
-            ViewerService viewers = new ViewerService(cache, store, directory, writer, VIEWER_FLUSH_WAIT_MILLIS);
-            receiver = Servers.receiver(config, cache, directory);
+            ViewerService viewers = new ViewerService(cache, store, directory, writer, VIEWER_FLUSH_WAIT_MILLIS, queries);
+            receiver = Servers.receiver(config, cache, directory, queries);
             sender = Servers.sender(config, viewers);
             running = true;
             LOG.info("logger started: cores on {}:{}, viewers on {}:{}, database {}", config.receiverAddress(),

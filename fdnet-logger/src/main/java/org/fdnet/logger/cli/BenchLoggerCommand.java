@@ -214,6 +214,9 @@ public final class BenchLoggerCommand implements Callable<Integer> {
         report.info("[2] keyed-COPY limit with 2 connections at once (disjoint nodes, 100,000-row batches)",
                 String.format("%,.0f rows/s (%.2f x one connection; the logger writes through %d)", two, two / keyed,
                         s.connections));
+        double limit = s.connections > 1 ? two : keyed;
+        report.check("[2] ratio logger / keyed-COPY limit on the same " + s.connections + " connection(s) (issue #21)",
+                String.format("%.2f (%,.0f of %,.0f rows/s)", s.rate / limit, s.rate, limit), ">= 0.75", s.rate / limit >= 0.75);
     }
 
     /** Phase 3: a moderate rate; for each event, from its time stamp in the core to the commit of its batch. */

@@ -98,8 +98,26 @@ final class SenderConnection extends Connection {
         });
     }
 
+    /**
+     * An answer the cache holds whole is found and sent while the writer and the receivers pause for it
+     * ({@link org.fdnet.logger.store.QueryPriority}); one that needs the database is not, since the writer must
+     * flush first.
+     */
     private void history(int id, int[] nodes, long from, long to) throws IOException {
-        List<NetworkEvent> events = events(nodes, from, to);
+        viewers.queries().begin();
+        try {
+            List<NetworkEvent> cached = viewers.fromCache(nodes, from, to);
+            if (cached != null) {
+                sendHistory(id, cached);
+                return;
+            }
+        } finally {
+            viewers.queries().end();
+        }
+        sendHistory(id, events(nodes, from, to));
+    }
+
+    private void sendHistory(int id, List<NetworkEvent> events) throws IOException {
         for (int start = 0; start < events.size(); start += Protocol.MAX_EVENTS_PER_FRAME) {
             List<NetworkEvent> chunk = events.subList(start, Math.min(events.size(), start + Protocol.MAX_EVENTS_PER_FRAME));
             sendUnflushed(w -> {

@@ -9,6 +9,7 @@ import java.util.Set;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.logger.cache.EventCache;
 import org.fdnet.logger.store.EventStore;
+import org.fdnet.logger.store.QueryPriority;
 import org.fdnet.logger.store.SourceDirectory;
 import org.fdnet.logger.writer.BatchWriter;
 
@@ -29,9 +30,11 @@ public final class ViewerService {
     private final SourceDirectory directory;
     private final BatchWriter writer;
     private final long flushTimeoutMillis;
+    private final QueryPriority queries;
 
     public ViewerService(EventCache cache, EventStore store, SourceDirectory directory, BatchWriter writer,
-                         long flushTimeoutMillis) {
+                         long flushTimeoutMillis, QueryPriority queries) {
+        this.queries = queries;
         this.cache = cache;
         this.store = store;
         this.directory = directory;
@@ -47,25 +50,40 @@ public final class ViewerService {
         return cache;
     }
 
-    public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws SQLException {
+    /** Tells the writer and the receivers that a query is being answered (they pause while one is). */
+    public QueryPriority queries() {
+        return queries;
+    }
+
+    /** The answer from the cache alone, in time order; {@code null} when the cache lacks some of the range. */
+    public List<NetworkEvent> fromCache(int[] sourceIds, long from, long to) {
         if (sourceIds.length == 1) {
             EventCache.CacheAnswer a = cache.history(sourceIds[0], from, to, directory.seenFromStart(sourceIds[0]));
-            if (a.complete()) {
-                return a.events(); // one node's timeline is already in time order: no copy, no sort
-            }
+            return a.complete() ? a.events() : null; // one node's timeline is already in time order: no copy, no sort
         }
         List<NetworkEvent> cached = new ArrayList<>();
-        List<Integer> incomplete = new ArrayList<>();
         for (int id : sourceIds) {
             EventCache.CacheAnswer a = cache.history(id, from, to, directory.seenFromStart(id));
             if (!a.complete()) {
-                incomplete.add(id);
+                return null;
             }
             cached.addAll(a.events());
         }
-        if (incomplete.isEmpty()) {
-            cached.sort(TIME_ORDER);
+        cached.sort(TIME_ORDER);
+        return cached;
+    }
+
+    /** The answer from the cache, or else from cache and database merged (the writer flushes first). */
+    public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws SQLException {
+        List<NetworkEvent> cached = fromCache(sourceIds, from, to);
+        if (cached != null) {
             return cached;
+        }
+        List<Integer> incomplete = new ArrayList<>();
+        for (int id : sourceIds) {
+            if (!cache.history(id, from, to, directory.seenFromStart(id)).complete()) {
+                incomplete.add(id);
+            }
         }
         writer.flush(flushTimeoutMillis);
         List<NetworkEvent> merged = new ArrayList<>();

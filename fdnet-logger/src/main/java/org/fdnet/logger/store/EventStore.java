@@ -53,9 +53,23 @@ public final class EventStore implements AutoCloseable {
     /** One COPY buffer per writer thread: with several writer connections, batches are encoded at once. */
     private final ThreadLocal<CopyRows> copyRows = ThreadLocal.withInitial(CopyRows::new);
 
+    /**
+     * Rows built and sent per COPY chunk: between two chunks the writer yields to viewer queries
+     * ({@link QueryPriority}); small enough that a chunk is a millisecond or two of work for the writer and its
+     * backend, large enough that a batch is still one COPY statement of few round trips.
+     */
+    static final int COPY_CHUNK_ROWS = 4096;
+    private final QueryPriority queries;
+
     public EventStore(DatabaseTarget target) {
+        this(target, QueryPriority.NONE);
+    }
+
+    /** A store whose writers pause between COPY chunks while {@code queries} says a viewer's query is answered. */
+    public EventStore(DatabaseTarget target, QueryPriority queries) {
         this.target = target;
         this.pool = new ConnectionPool(target, 8);
+        this.queries = queries;
     }
 
     public DatabaseTarget target() {
@@ -135,19 +149,15 @@ public final class EventStore implements AutoCloseable {
             saveNames(c, names);
             CopyManager copy = c.unwrap(PGConnection.class).getCopyAPI();
             sortByKey(data);
-            rows.clear();
-            for (CachedEvent e : data) {
-                DataValueEvent d = (DataValueEvent) e.event();
+            copyInChunks(copy, rows, data, "COPY datavalue_log (sourceid, time, value, typevalue) FROM STDIN", e -> {
+                DataValueEvent d = (DataValueEvent) e;
                 rows.number(d.sourceId()).number(d.time()).value(d.value()).number(d.type().code()).endRow();
-            }
-            copy(copy, rows, "COPY datavalue_log (sourceid, time, value, typevalue) FROM STDIN");
+            });
             sortByKey(relations);
-            rows.clear();
-            for (CachedEvent e : relations) {
-                RelationValueEvent r = (RelationValueEvent) e.event();
+            copyInChunks(copy, rows, relations, "COPY procvalue_log (sourceid, time, value) FROM STDIN", e -> {
+                RelationValueEvent r = (RelationValueEvent) e;
                 rows.number(r.sourceId()).number(r.time()).text(r.value()).endRow();
-            }
-            copy(copy, rows, "COPY procvalue_log (sourceid, time, value) FROM STDIN");
+            });
             rows.clear();
             for (CachedEvent e : commands) {
                 NetworkCommandEvent n = (NetworkCommandEvent) e.event();
@@ -262,6 +272,40 @@ public final class EventStore implements AutoCloseable {
             lastSeq.merge(run, max, Math::max);
         }
         return lastSeq;
+    }
+
+    /** Appends one event's row to the COPY buffer. */
+    @FunctionalInterface
+    private interface Row {
+        void put(NetworkEvent e);
+    }
+
+    /**
+     * One COPY statement for {@code events}, built and sent {@link #COPY_CHUNK_ROWS} rows at a time, yielding to
+     * viewer queries between chunks (the backend then has nothing to read and sleeps too).
+     */
+    private void copyInChunks(CopyManager copy, CopyRows rows, List<CachedEvent> events, String sql, Row row)
+            throws SQLException {
+        if (events.isEmpty()) {
+            return;
+        }
+        CopyIn in = copy.copyIn(sql);
+        try {
+            for (int start = 0; start < events.size(); start += COPY_CHUNK_ROWS) {
+                rows.clear();
+                int end = Math.min(events.size(), start + COPY_CHUNK_ROWS);
+                for (int i = start; i < end; i++) {
+                    row.put(events.get(i).event());
+                }
+                in.writeToCopy(rows.bytes(), 0, rows.length());
+                queries.yieldToQueries();
+            }
+            in.endCopy();
+        } finally {
+            if (in.isActive()) {
+                in.cancelCopy();
+            }
+        }
     }
 
     private static void copy(CopyManager copy, CopyRows rows, String sql) throws SQLException {

@@ -44,6 +44,7 @@ public final class NetworkStateLogger implements AutoCloseable {
     private EventCache cache;
     private SourceDirectory directory;
     private BatchWriter writer;
+    private QueryPriority queries;
     private Thread writerThread;
     private TcpServer receiver;
     private TcpServer sender;
@@ -73,7 +74,7 @@ public final class NetworkStateLogger implements AutoCloseable {
             } else {
                 target = new DatabaseTarget(config.jdbcUrl(), config.databaseUser(), config.databasePassword());
             }
-            QueryPriority queries = new QueryPriority(config.queryPauseMillis());
+            queries = new QueryPriority(config.queryPauseMillis());
             store = new EventStore(target, queries);
             store.createSchema();
             directory = new SourceDirectory(store);
@@ -122,6 +123,11 @@ public final class NetworkStateLogger implements AutoCloseable {
         if (w != null) {
             w.retryDatabase();
         }
+    }
+
+    /** How viewer queries take precedence over the writer and receivers (see {@link QueryPriority}). */
+    public QueryPriority queries() {
+        return queries;
     }
 
     public BatchWriter writer() {

@@ -18,7 +18,7 @@ public record ViewerRequest(MessageType type, int id, String filter, int[] nodes
         return new ViewerRequest(MessageType.LIST_RUNS, id, "", NO_NODES, 0, 0);
     }
 
-    /** {@code type} is {@link MessageType#HISTORY} or {@link MessageType#HISTORY_NUMBERS}. */
+    /** {@code type} is {@link MessageType#HISTORY}. */
     public static ViewerRequest history(MessageType type, int id, int[] nodes, long from, long to) {
         return new ViewerRequest(type, id, "", nodes, from, to);
     }

@@ -20,20 +20,25 @@ import java.util.concurrent.locks.ReentrantLock;
  * and a caller does a chunk of work between two yields. When nobody queries, a yield is one volatile read.
  */
 public final class QueryPriority {
-    /** Nobody queries: yields cost nothing (tests and tools that have no viewers). */
-    public static final QueryPriority NONE = new QueryPriority(0);
-
-    private final long maxPauseNanos;
+    private volatile long maxPauseNanos;
     private final AtomicInteger answering = new AtomicInteger();
     private final ReentrantLock lock = new ReentrantLock();
     private final Condition idle = lock.newCondition();
 
     /** @param maxPauseMillis the longest one yield waits (0: never wait) */
     public QueryPriority(long maxPauseMillis) {
-        if (maxPauseMillis < 0) {
-            throw new IllegalArgumentException("maxPauseMillis must be at least 0, was " + maxPauseMillis);
+        maxPauseMillis(maxPauseMillis);
+    }
+
+    /**
+     * Changes the longest pause while running (the one setting of this class that may change: a benchmark
+     * compares pausing with not pausing in one run).
+     */
+    public void maxPauseMillis(long millis) {
+        if (millis < 0) {
+            throw new IllegalArgumentException("maxPauseMillis must be at least 0, was " + millis);
         }
-        this.maxPauseNanos = TimeUnit.MILLISECONDS.toNanos(maxPauseMillis);
+        maxPauseNanos = TimeUnit.MILLISECONDS.toNanos(millis);
     }
 
     /** A query starts being answered. Pair with {@link #end()} in a finally block. */
@@ -63,12 +68,13 @@ public final class QueryPriority {
      * is; keeps the interrupt status if interrupted.
      */
     public void yieldToQueries() {
-        if (answering.get() == 0 || maxPauseNanos == 0) {
+        long pause = maxPauseNanos;
+        if (answering.get() == 0 || pause == 0) {
             return;
         }
         lock.lock();
         try {
-            long left = maxPauseNanos;
+            long left = pause;
             while (answering.get() > 0 && left > 0) {
                 left = idle.awaitNanos(left);
             }

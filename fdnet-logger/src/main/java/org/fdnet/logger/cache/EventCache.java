@@ -70,13 +70,14 @@ public final class EventCache {
         return limits.networkEventBytes() + n.name().module().length() + n.name().node().length();
     }
 
-    /** What a value holds beyond its fixed-size object: a number or boolean nothing, else its text, bytes or vector. */
+    /** A value's payload as the wire carries it: 1 byte for a boolean, 8 for a number, a string's length, 8 per element. */
     private static int payloadBytes(TypedValue v) {
         return switch (v.type()) {
+            case BOOLEAN -> 1;
+            case LONG, DOUBLE -> 8;
             case STRING -> v.stringValue().length();
             case BYTES -> v.length();
             case DOUBLES -> 8 * v.length();
-            case BOOLEAN, LONG, DOUBLE -> 0;
         };
     }
 

@@ -30,7 +30,7 @@ public final class TraceText {
         if (event instanceof NodeNamedEvent n) {
             return "named    #" + n.sourceId() + " " + n.kind().label() + " " + n.name();
         } else if (event instanceof DataValueEvent v) {
-            return "value    " + name(v.sourceId()) + " = " + v.value();
+            return "value    " + name(v.sourceId()) + " = " + v.value().text();
         } else if (event instanceof RelationValueEvent r) {
             return "relation " + name(r.sourceId()) + " " + r.value();
         }

@@ -1,9 +1,7 @@
 package org.fdnet.runtime;
 
-import java.util.Arrays;
-import java.util.Base64;
 import java.util.Objects;
-import java.util.StringJoiner;
+import org.fdnet.event.TypedValue;
 import org.fdnet.event.ValueType;
 import org.fdnet.netinfo.ParameterType;
 
@@ -14,52 +12,54 @@ import org.fdnet.netinfo.ParameterType;
  * sensor value ({@link #withTick}) and passed on by the engine — a Relation's outputs get the newest tick of the
  * inputs it read. Immutable: arrays are copied in and out, so a value once published can be shared by every
  * reader without a lock.
+ *
+ * <p>The payload is a {@link TypedValue}: the very object a {@link org.fdnet.event.DataValueEvent} carries, so
+ * publishing a write builds one event and no text (see {@link #typed()}).
  */
 public final class Value {
-    private final ValueType type;
-    private final Object payload;
+    private final TypedValue payload;
     private final long time;
     private final long tick;
 
-    private Value(ValueType type, Object payload, long time) {
-        this(type, payload, time, 0);
-    }
-
-    private Value(ValueType type, Object payload, long time, long tick) {
-        this.type = type;
+    private Value(TypedValue payload, long time, long tick) {
         this.payload = payload;
         this.time = time;
         this.tick = tick;
     }
 
+    /** A not-yet-written value (time 0, tick 0) of {@code payload}. */
+    public static Value of(TypedValue payload) {
+        return new Value(Objects.requireNonNull(payload, "payload"), 0, 0);
+    }
+
     public static Value of(boolean b) {
-        return new Value(ValueType.BOOLEAN, b, 0);
+        return of(TypedValue.of(b));
     }
 
     public static Value of(long l) {
-        return new Value(ValueType.LONG, l, 0);
+        return of(TypedValue.of(l));
     }
 
     public static Value of(double d) {
-        return new Value(ValueType.DOUBLE, d, 0);
+        return of(TypedValue.of(d));
     }
 
     public static Value of(String s) {
-        return new Value(ValueType.STRING, Objects.requireNonNull(s, "string value"), 0);
+        return of(TypedValue.of(s));
     }
 
     public static Value ofBytes(byte[] bytes) {
-        return new Value(ValueType.BYTES, bytes.clone(), 0);
+        return of(TypedValue.ofBytes(bytes));
     }
 
     /** A posture or any vector of doubles. */
     public static Value ofDoubles(double... values) {
-        return new Value(ValueType.DOUBLES, values.clone(), 0);
+        return of(TypedValue.ofDoubles(values));
     }
 
     /** Takes ownership of {@code values} without copying: for the engine and library, which never touch it again. */
     static Value ownDoubles(double[] values) {
-        return new Value(ValueType.DOUBLES, values, 0);
+        return of(TypedValue.ownDoubles(values));
     }
 
     /** The default value of a type: false, 0, 0.0, "", no bytes, an empty vector. */
@@ -76,29 +76,26 @@ public final class Value {
 
     /** Parses the text form ({@link #text()}, or a parameter's form) of a value of {@code type}. */
     public static Value parse(ValueType type, String text) {
-        Object parsed = parameterType(type).parse(text);
-        return new Value(type, parsed, 0);
+        return of(TypedValue.parse(type, text));
     }
 
     public static ParameterType parameterType(ValueType type) {
-        return switch (type) {
-            case BOOLEAN -> ParameterType.BOOLEAN;
-            case LONG -> ParameterType.LONG;
-            case DOUBLE -> ParameterType.DOUBLE;
-            case STRING -> ParameterType.STRING;
-            case BYTES -> ParameterType.BYTES;
-            case DOUBLES -> ParameterType.DOUBLES;
-        };
+        return TypedValue.parameterType(type);
     }
 
     /** The same payload and tick stamped with {@code newTime}. */
     public Value at(long newTime) {
-        return new Value(type, payload, newTime, tick);
+        return new Value(payload, newTime, tick);
     }
 
     /** The same payload and time, computed from sensor snapshot {@code sourceTick} ({@link #tick()}). */
     public Value withTick(long sourceTick) {
-        return sourceTick == tick ? this : new Value(type, payload, time, sourceTick);
+        return sourceTick == tick ? this : new Value(payload, time, sourceTick);
+    }
+
+    /** The typed payload without time or tick: what this value's event carries (shared, never copied). */
+    public TypedValue typed() {
+        return payload;
     }
 
     /** The newest sensor snapshot this value was computed from (its tick number), 0 when none. */
@@ -107,7 +104,7 @@ public final class Value {
     }
 
     public ValueType type() {
-        return type;
+        return payload.type();
     }
 
     /** µs since the epoch when the value was written; 0 for a value not yet written. */
@@ -116,27 +113,26 @@ public final class Value {
     }
 
     public boolean isScalar() {
+        ValueType type = payload.type();
         return type != ValueType.DOUBLES && type != ValueType.BYTES && type != ValueType.STRING;
     }
 
     /** Numbers as they are, booleans as 1/0, a one-element vector as its element. */
     public double asDouble() {
-        return switch (type) {
-            case DOUBLE -> (Double) payload;
-            case LONG -> (Long) payload;
-            case BOOLEAN -> ((Boolean) payload) ? 1.0 : 0.0;
+        return switch (payload.type()) {
+            case DOUBLE, LONG -> payload.number();
+            case BOOLEAN -> payload.booleanValue() ? 1.0 : 0.0;
             case DOUBLES -> {
-                double[] a = (double[]) payload;
-                if (a.length == 1) {
-                    yield a[0];
+                if (payload.length() == 1) {
+                    yield payload.element(0);
                 }
-                throw new IllegalArgumentException("a vector of " + a.length + " values is not a number");
+                throw new IllegalArgumentException("a vector of " + payload.length() + " values is not a number");
             }
             case STRING -> {
                 try {
-                    yield Double.parseDouble(((String) payload).strip());
+                    yield Double.parseDouble(payload.stringValue().strip());
                 } catch (NumberFormatException e) {
-                    throw new IllegalArgumentException("'" + payload + "' is not a number", e);
+                    throw new IllegalArgumentException("'" + payload.stringValue() + "' is not a number", e);
                 }
             }
             case BYTES -> throw new IllegalArgumentException("bytes are not a number");
@@ -144,68 +140,59 @@ public final class Value {
     }
 
     public long asLong() {
-        if (type == ValueType.LONG) {
-            return (Long) payload;
+        if (payload.type() == ValueType.LONG) {
+            return payload.longValue();
         }
         return Math.round(asDouble());
     }
 
     /** Booleans as they are; numbers are true when not zero. */
     public boolean asBoolean() {
-        if (type == ValueType.BOOLEAN) {
-            return (Boolean) payload;
+        if (payload.type() == ValueType.BOOLEAN) {
+            return payload.booleanValue();
         }
-        if (type == ValueType.STRING) {
-            return (Boolean) ParameterType.BOOLEAN.parse((String) payload);
+        if (payload.type() == ValueType.STRING) {
+            return (Boolean) ParameterType.BOOLEAN.parse(payload.stringValue());
         }
         return asDouble() != 0.0;
     }
 
     /** A copy of the vector; a number becomes a vector of one. */
     public double[] asDoubles() {
-        if (type == ValueType.DOUBLES) {
-            return ((double[]) payload).clone();
+        if (payload.type() == ValueType.DOUBLES) {
+            return payload.doubles();
         }
         return new double[] {asDouble()};
     }
 
     /** Length of a vector, 1 for a scalar. */
     public int length() {
-        return type == ValueType.DOUBLES ? ((double[]) payload).length : 1;
+        return payload.type() == ValueType.DOUBLES ? payload.length() : 1;
     }
 
     /** Element {@code i} of a vector without copying it (a scalar is a vector of one). */
     public double element(int i) {
-        return type == ValueType.DOUBLES ? ((double[]) payload)[i] : asDouble();
+        return payload.type() == ValueType.DOUBLES ? payload.element(i) : asDouble();
     }
 
     public byte[] asBytes() {
-        if (type == ValueType.BYTES) {
-            return ((byte[]) payload).clone();
+        if (payload.type() == ValueType.BYTES) {
+            return payload.bytes();
         }
-        throw new IllegalArgumentException("a " + type + " value is not bytes");
+        throw new IllegalArgumentException("a " + payload.type() + " value is not bytes");
     }
 
     /**
-     * The text form used in events and files: {@code true}, {@code 42}, {@code 0.5}, the string, Base64
-     * for bytes, comma-separated doubles for vectors. {@link #parse} reads it back.
+     * The text form used in files and shown to people: {@code true}, {@code 42}, {@code 0.5}, the string, Base64
+     * for bytes, comma-separated doubles for vectors ({@link TypedValue#text()}). {@link #parse} reads it back.
      */
     public String text() {
-        return switch (type) {
-            case BYTES -> Base64.getEncoder().encodeToString((byte[]) payload);
-            case DOUBLES -> {
-                StringJoiner j = new StringJoiner(",");
-                for (double d : (double[]) payload) {
-                    j.add(Double.toString(d));
-                }
-                yield j.toString();
-            }
-            default -> payload.toString();
-        };
+        return payload.text();
     }
 
     /** This value converted to {@code target}, or an IllegalArgumentException saying why it cannot be. */
     public Value convertTo(ValueType target) {
+        ValueType type = payload.type();
         if (target == type) {
             return this;
         }
@@ -222,14 +209,7 @@ public final class Value {
 
     /** Same type and payload (times and ticks may differ). */
     public boolean samePayload(Value other) {
-        if (other == null || other.type != type) {
-            return false;
-        }
-        return switch (type) {
-            case DOUBLES -> Arrays.equals((double[]) payload, (double[]) other.payload);
-            case BYTES -> Arrays.equals((byte[]) payload, (byte[]) other.payload);
-            default -> payload.equals(other.payload);
-        };
+        return other != null && payload.equals(other.payload);
     }
 
     @Override
@@ -239,11 +219,11 @@ public final class Value {
 
     @Override
     public int hashCode() {
-        return Objects.hash(type, time, text());
+        return 31 * payload.hashCode() + Long.hashCode(time);
     }
 
     @Override
     public String toString() {
-        return type.name().toLowerCase() + ":" + text() + (time == 0 ? "" : "@" + time);
+        return payload + (time == 0 ? "" : "@" + time);
     }
 }

@@ -84,7 +84,7 @@ class DrivenClockTest {
             // sawtooth 0.5 + 0.5 * (2 frac(t) - 1) = frac(t): t read from the driven clock, 0.25 s
             assertThat(net.controller().value(ref("Saw")).asDouble()).isCloseTo(0.25, org.assertj.core.data.Offset.offset(1e-9));
             List<DataValueEvent> saws = sink.events(DataValueEvent.class).stream()
-                    .filter(e -> e.value().startsWith("0.25")).toList();
+                    .filter(e -> e.value().text().startsWith("0.25")).toList();
             assertThat(saws).isNotEmpty();
             assertThat(saws.get(0).time()).as("stamped at simulated time").isBetween(START + 250_000, START + 250_100);
             long clockFirings = 25;

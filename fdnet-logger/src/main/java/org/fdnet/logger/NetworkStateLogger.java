@@ -13,6 +13,7 @@ import org.fdnet.logger.server.ViewerService;
 import org.fdnet.logger.store.DatabaseTarget;
 import org.fdnet.logger.store.EmbeddedDatabase;
 import org.fdnet.logger.store.EventStore;
+import org.fdnet.logger.store.QueryPriority;
 import org.fdnet.logger.store.SourceDirectory;
 import org.fdnet.logger.writer.BatchWriter;
 import org.fdnet.logger.writer.WriterSettings;
@@ -43,6 +44,7 @@ public final class NetworkStateLogger implements AutoCloseable {
     private EventCache cache;
     private SourceDirectory directory;
     private BatchWriter writer;
+    private QueryPriority queries;
     private Thread writerThread;
     private TcpServer receiver;
     private TcpServer sender;
@@ -72,7 +74,8 @@ public final class NetworkStateLogger implements AutoCloseable {
             } else {
                 target = new DatabaseTarget(config.jdbcUrl(), config.databaseUser(), config.databasePassword());
             }
-            store = new EventStore(target);
+            queries = new QueryPriority(config.queryPauseMillis());
+            store = new EventStore(target, queries);
             store.createSchema();
             directory = new SourceDirectory(store);
             directory.load();
@@ -81,8 +84,8 @@ public final class NetworkStateLogger implements AutoCloseable {
             writer = new BatchWriter(WriterSettings.of(config), cache, store, directory, this::giveUp);
             writerThread = new Thread(writer, "fdnet-logger-writer");
             writerThread.start();
-            ViewerService viewers = new ViewerService(cache, store, directory, writer, VIEWER_FLUSH_WAIT_MILLIS);
-            receiver = Servers.receiver(config, cache, directory);
+            ViewerService viewers = new ViewerService(cache, store, directory, writer, VIEWER_FLUSH_WAIT_MILLIS, queries);
+            receiver = Servers.receiver(config, cache, directory, queries);
             sender = Servers.sender(config, viewers);
             running = true;
             LOG.info("logger started: cores on {}:{}, viewers on {}:{}, database {}", config.receiverAddress(),
@@ -120,6 +123,11 @@ public final class NetworkStateLogger implements AutoCloseable {
         if (w != null) {
             w.retryDatabase();
         }
+    }
+
+    /** How viewer queries take precedence over the writer and receivers (see {@link QueryPriority}). */
+    public QueryPriority queries() {
+        return queries;
     }
 
     public BatchWriter writer() {

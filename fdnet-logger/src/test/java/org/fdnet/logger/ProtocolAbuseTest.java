@@ -18,6 +18,7 @@ import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.event.wire.FrameWriter;
 import org.fdnet.event.wire.Hello;
 import org.fdnet.event.wire.MessageType;
+import org.fdnet.event.wire.Protocol;
 import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.logger.server.ClientInfo;
 import org.fdnet.logger.server.ConnectionState;
@@ -27,7 +28,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * Garbage, truncated and oversized frames close their own connection only; good clients never notice. One client
+ * Garbage, truncated and oversized frames, and a peer of another protocol version, close their own connection only; good clients never notice. One client
  * beyond {@code receiver.maxClients} / {@code sender.maxClients} is refused with an ERROR naming the limit, while
  * the ones served stay served; once one leaves, a new one is taken.
  */
@@ -71,6 +72,13 @@ class ProtocolAbuseTest {
                     w.writeTo(out);
                 });
                 assertThat(wrongFirst).contains("expected HELLO");
+
+                String versionOne = closedWithError(port, out -> { // a core of the text-value protocol
+                    FrameWriter w = new FrameWriter();
+                    new Hello(1, Protocol.ROLE_CORE, UUID.randomUUID(), "old-core").write(w);
+                    w.writeTo(out);
+                });
+                assertThat(versionOne).contains("protocol version 1 not supported").contains("version " + Protocol.VERSION);
 
                 truncatedThenGone(port);
 

@@ -7,7 +7,7 @@ import org.fdnet.event.NetworkCommand;
 import org.fdnet.event.NetworkCommandEvent;
 import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.event.RelationValueEvent;
-import org.fdnet.event.ValueType;
+import org.fdnet.event.TypedValue;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 
@@ -28,7 +28,7 @@ final class TestEvents {
         sink.accept(new NodeNamedEvent(datas, clock.next(), NodeKind.RELATION, new NodeRef("arm", "Controller")));
     }
 
-    /** One value (with a tab and newline now and then, to exercise COPY escaping), a status, or a command. */
+    /** One value (a string with a tab and newline now and then, to exercise COPY escaping), a status, or a command. */
     void produce(EventSink sink) {
         long i = produced++;
         if (i % 50 == 49) {
@@ -36,8 +36,10 @@ final class TestEvents {
         } else if (i % 500 == 499) {
             sink.accept(new NetworkCommandEvent(datas, clock.next(), "proc", NetworkCommand.CONNECT, "3>" + datas, "reader"));
         } else {
-            String v = i % 97 == 0 ? "line\\one\nline two\u00e9" : Double.toString(i * 0.25);
-            sink.accept(new DataValueEvent((int) (i % datas), clock.next(), ValueType.DOUBLE, v));
+            // doubles with a short text (i * 0.25) and with 17 digits (0.30000000000000004 = 3 * 0.1), a string now and then
+            TypedValue v = i % 97 == 0 ? TypedValue.of("line\\one\nline two\u00e9")
+                    : TypedValue.of(i % 2 == 0 ? i * 0.25 : i * 0.1);
+            sink.accept(new DataValueEvent((int) (i % datas), clock.next(), v));
         }
     }
 

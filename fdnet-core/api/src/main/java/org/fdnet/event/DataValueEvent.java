@@ -3,14 +3,31 @@ package org.fdnet.event;
 import java.util.Objects;
 
 /**
- * A network state event: a Data took a value ({@code datavalue_log}).
- *
- * @param value the value as text: {@code true}, {@code 42}, {@code 0.5}, a string, Base64 for bytes,
- *              comma-separated doubles for postures
+ * A network state event: a Data took a value ({@code datavalue_log}). The value is typed — numbers stay
+ * numbers from the runtime's commit to the wire (binary, see {@code docs/protocol.md}) and to a plot; it becomes
+ * text only where someone needs text (the logger's COPY, a trace, a table cell).
  */
-public record DataValueEvent(int sourceId, long time, ValueType type, String value) implements NetworkEvent {
+public record DataValueEvent(int sourceId, long time, TypedValue value) implements NetworkEvent {
     public DataValueEvent {
-        Objects.requireNonNull(type, "type");
         Objects.requireNonNull(value, "value");
+    }
+
+    /**
+     * The event of a value given in its text form ({@link TypedValue#parse}): for values read back as text (the
+     * database's column, a file) and for tests.
+     *
+     * @throws IllegalArgumentException when {@code text} is not a value of {@code type}
+     */
+    public DataValueEvent(int sourceId, long time, ValueType type, String text) {
+        this(sourceId, time, TypedValue.parse(Objects.requireNonNull(type, "type"), Objects.requireNonNull(text, "value")));
+    }
+
+    public ValueType type() {
+        return value.type();
+    }
+
+    /** The same value from another source (the logger maps a core's node ids to global ones). */
+    public DataValueEvent withSource(int newSourceId) {
+        return new DataValueEvent(newSourceId, time, value);
     }
 }

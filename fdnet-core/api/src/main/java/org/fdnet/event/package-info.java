@@ -3,7 +3,8 @@
  *
  * <pre>
  *   runtime (Data write, Relation status, structural command)
- *        │  stamps time with EventClock (unique, strictly increasing)
+ *        │  stamps time with EventClock (unique, strictly increasing); a Data's event carries the value's
+ *        │  own TypedValue (shared, immutable: nothing is formatted inside the commit lock)
  *        ▼
  *   NetworkEvent ──▶ EventSink.accept()  (never blocks a Relation)
  *                       ├── MemoryEventSink   (tests, run summaries)
@@ -13,6 +14,7 @@
  * The four event kinds map onto the logger's tables: {@link org.fdnet.event.DataValueEvent} →
  * {@code datavalue_log}, {@link org.fdnet.event.RelationValueEvent} → {@code procvalue_log},
  * {@link org.fdnet.event.NetworkCommandEvent} → {@code netcommand_log}, and
- * {@link org.fdnet.event.NodeNamedEvent} → the table that names nodes.
+ * {@link org.fdnet.event.NodeNamedEvent} → the table that names nodes. This package depends on {@code netinfo}
+ * only, never on the runtime: it is the API that the logger and the viewers share with the cores.
  */
 package org.fdnet.event;

@@ -140,10 +140,14 @@ class FaultToleranceTest {
     void shouldPushBackOnTheCoreWithinItsCapacityWhileTheDatabaseIsDownAndLoseNothing() throws Exception {
         LoggerConfig config = database.fixture().loggerConfig().set(LoggerSetting.MEMORY_CAPACITY_MB, "1");
         long capacity = config.cacheCapacityBytes();
+        // The client's window (events it sends unacknowledged) must hold more than the cache's capacity, or the
+        // database's outage could never press the cache: 8,000 events of ~175 counted bytes are 1.3 MiB.
+        int window = 8000;
+        assertThat((long) window * config.networkEventBytes()).isGreaterThan(capacity);
         try (NetworkStateLogger logger = new NetworkStateLogger(config)) {
             logger.start();
             try (LoggerClient client = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(),
-                    "pressed-core").withMemoryEvents(5000).withJournal(folder.resolve("j-press"), 256 << 20))) {
+                    "pressed-core").withMemoryEvents(window).withJournal(folder.resolve("j-press"), 256 << 20))) {
                 Producer producer = new Producer(new TestEvents(8), client, 40);
                 waitForCommits(client, 1000);
                 database.fixture().stopDatabase();

@@ -17,8 +17,9 @@ import org.slf4j.LoggerFactory;
 
 /**
  * Turns what the engine does into {@link NetworkEvent}s stamped by the network's one {@link EventClock},
- * and hands them to the sinks. With no sink attached nothing is built (the text of a value costs more
- * than the write itself).
+ * and hands them to the sinks. With no sink attached nothing is built. A Data's event carries the value's own
+ * {@link org.fdnet.event.TypedValue} (shared, immutable): inside the commit lock one event object is made and
+ * nothing is formatted — text, where anyone needs it, is made outside (the logger's COPY, a trace).
  */
 final class EventPublisher {
     private static final Logger LOG = LoggerFactory.getLogger(EventPublisher.class);
@@ -53,7 +54,7 @@ final class EventPublisher {
     /** Called under the commit lock, with the value's own (already unique) time. */
     void dataValue(DataNode data, Value stamped) {
         if (enabled()) {
-            emit(new DataValueEvent(data.id, stamped.time(), stamped.type(), stamped.text()));
+            emit(new DataValueEvent(data.id, stamped.time(), stamped.typed())); // the value's own payload: no text
         }
     }
 

@@ -17,8 +17,6 @@ public final class CachedEvent {
     private boolean committed;
     private boolean left;
     int pendingMonitors;
-    /** The event as a plotting viewer receives it, encoded the first time one asks (see {@link #wire()}). */
-    private volatile byte[] wire;
 
     public CachedEvent(NetworkEvent event, RunProgress run, long seq, int bytes, long arrivalNanos) {
         this.event = event;
@@ -54,20 +52,6 @@ public final class CachedEvent {
 
     public long arrivalNanos() {
         return arrivalNanos;
-    }
-
-    /**
-     * The event's encoding for a plot's history ({@code EventCodec.writeNumeric}) if a sender kept it, else
-     * {@code null}. Kept only for events a viewer asked for: an array of 21 bytes for a number (16 more of
-     * array header, 40 in all), once per event; then every later answer is an array copy, not an encoding.
-     */
-    public byte[] wire() {
-        return wire;
-    }
-
-    /** Keeps the event's wire encoding (two senders may race: both encode the same bytes). */
-    public void keepWire(byte[] encoded) {
-        wire = encoded;
     }
 
     boolean committed() {

@@ -12,6 +12,7 @@ import org.fdnet.event.NetworkCommandEvent;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.event.RelationValueEvent;
+import org.fdnet.event.TypedValue;
 
 /**
  * The logger's cache (thesis, chapter 4 IV): two event containers — network state (Data and Relation
@@ -59,7 +60,7 @@ public final class EventCache {
     /** The bytes an event counts for. */
     public int sizeOf(NetworkEvent e) {
         if (e instanceof DataValueEvent d) {
-            return limits.networkEventBytes() + d.value().length();
+            return limits.networkEventBytes() + payloadBytes(d.value());
         } else if (e instanceof RelationValueEvent r) {
             return limits.networkEventBytes() + r.value().length();
         } else if (e instanceof NetworkCommandEvent c) {
@@ -67,6 +68,17 @@ public final class EventCache {
         }
         NodeNamedEvent n = (NodeNamedEvent) e;
         return limits.networkEventBytes() + n.name().module().length() + n.name().node().length();
+    }
+
+    /** A value's payload as the wire carries it: 1 byte for a boolean, 8 for a number, a string's length, 8 per element. */
+    private static int payloadBytes(TypedValue v) {
+        return switch (v.type()) {
+            case BOOLEAN -> 1;
+            case LONG, DOUBLE -> 8;
+            case STRING -> v.stringValue().length();
+            case BYTES -> v.length();
+            case DOUBLES -> 8 * v.length();
+        };
     }
 
     /** Blocks while the cache is pressured (critical level reached, normal not yet regained). */

@@ -87,6 +87,7 @@ public final class LoggerConfig {
             case WRITER_RECONNECT_ATTEMPTS -> range(s, v, 1, 1_000_000);
             case WRITER_RECONNECT_DELAY -> range(s, v, 0, 3_600_000);
             case RECEIVER_MAX_CLIENTS, SENDER_MAX_CLIENTS -> range(s, v, 1, 10_000);
+            case SENDER_QUERY_PAUSE -> range(s, v, 0, 1000);
             case RECEIVER_MAX_FRAME -> range(s, v, 1024, 64 << 20);
             case MEMORY_NETWORK_EVENT_BYTES, MEMORY_COMMAND_EVENT_BYTES -> range(s, v, 16, 1_000_000);
             case MEMORY_CAPACITY_MB -> range(s, v, 1, 1_000_000);
@@ -220,6 +221,11 @@ public final class LoggerConfig {
 
     public int senderMaxClients() {
         return (int) number(LoggerSetting.SENDER_MAX_CLIENTS);
+    }
+
+    /** How long one pause of the writer or a receiver for a viewer's query lasts at most ({@code QueryPriority}). */
+    public long queryPauseMillis() {
+        return number(LoggerSetting.SENDER_QUERY_PAUSE);
     }
 
     public int networkEventBytes() {

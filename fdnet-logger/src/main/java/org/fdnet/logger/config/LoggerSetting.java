@@ -35,6 +35,8 @@ public enum LoggerSetting {
     SENDER_ADDRESS("sender.address", Panel.SENDER, "127.0.0.1", "address the viewer server binds"),
     SENDER_PORT("sender.port", Panel.SENDER, "5556", "port for viewers"),
     SENDER_MAX_CLIENTS("sender.maxClients", Panel.SENDER, "100", "viewers served at once"),
+    SENDER_QUERY_PAUSE("sender.queryPauseMillis", Panel.SENDER, "20",
+            "while a viewer's query is answered, the writer's COPY and the receivers pause up to this long (0: never)"),
 
     MEMORY_NETWORK_EVENT_BYTES("memory.networkEventBytes", Panel.MEMORY, "167", "bytes counted per state event (+ value)"),
     MEMORY_COMMAND_EVENT_BYTES("memory.commandEventBytes", Panel.MEMORY, "223", "bytes counted per command event"),

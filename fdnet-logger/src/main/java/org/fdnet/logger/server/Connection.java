@@ -74,7 +74,7 @@ public abstract class Connection implements Runnable {
             Hello hello = Hello.read(first);
             if (hello.version() != Protocol.VERSION) {
                 refuse(ErrorCode.VERSION, "protocol version " + hello.version() + " not supported; this logger speaks "
-                        + Protocol.VERSION);
+                        + "version " + Protocol.VERSION + " (update the peer to the same FDNet release)");
                 return;
             }
             name = hello.name();

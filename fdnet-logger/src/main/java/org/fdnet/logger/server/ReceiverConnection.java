@@ -21,6 +21,7 @@ import org.fdnet.event.wire.ProtocolException;
 import org.fdnet.logger.cache.CachedEvent;
 import org.fdnet.logger.cache.EventCache;
 import org.fdnet.logger.cache.RunProgress;
+import org.fdnet.logger.store.QueryPriority;
 import org.fdnet.logger.store.SourceDirectory;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -40,6 +41,7 @@ final class ReceiverConnection extends Connection {
     private final EventCache cache;
     private final SourceDirectory directory;
     private final RunOwners owners;
+    private final QueryPriority queries;
     /** Node ids of a core up to here are looked up in {@link #knownGlobalIds}: 1 MiB of table at most. */
     private static final int MAX_TABLED_LOCAL_ID = 1 << 18;
 
@@ -50,11 +52,13 @@ final class ReceiverConnection extends Connection {
     private final Object ackLock = new Object();
     private long ackWanted;
 
-    ReceiverConnection(Socket socket, int maxFrameBytes, EventCache cache, SourceDirectory directory, RunOwners owners) {
+    ReceiverConnection(Socket socket, int maxFrameBytes, EventCache cache, SourceDirectory directory, RunOwners owners,
+                       QueryPriority queries) {
         super(socket, maxFrameBytes);
         this.cache = cache;
         this.directory = directory;
         this.owners = owners;
+        this.queries = queries;
     }
 
     @Override
@@ -127,6 +131,7 @@ final class ReceiverConnection extends Connection {
                 cache.awaitRoom();
                 state(ConnectionState.ACTIVATED);
             }
+            queries.yieldToQueries(); // a viewer's query first: the core's TCP buffers meanwhile, nothing is lost
             Frame f = in.read();
             if (f == null) {
                 return;

@@ -23,9 +23,7 @@ import org.slf4j.LoggerFactory;
 
 /**
  * A viewer's connection to the sender server: LIST_NODES (names), HISTORY (cache and database merged, sent
- * in chunks), HISTORY_NUMBERS (the same, numbers as numbers: a plot's path; from the cache it sends each event's
- * kept bytes, {@link CachedEvent#wire()}, encoding an event only the first time any viewer asks for it),
- * MONITOR / UNMONITOR (live stream through a {@link MonitorStream}).
+ * in chunks; values in binary, so a number costs 22 bytes and no formatting), MONITOR / UNMONITOR (live stream through a {@link MonitorStream}).
  */
 final class SenderConnection extends Connection {
     private static final Logger LOG = LoggerFactory.getLogger(SenderConnection.class);
@@ -62,7 +60,6 @@ final class SenderConnection extends Connection {
                 case LIST_NODES -> listNodes(r.id(), r.filter());
                 case LIST_RUNS -> listRuns(r.id());
                 case HISTORY -> history(r.id(), r.nodes(), r.from(), r.to());
-                case HISTORY_NUMBERS -> historyNumbers(r.id(), r.nodes(), r.from(), r.to());
                 case MONITOR -> monitor().monitor(r.nodes());
                 case UNMONITOR -> monitor().unmonitor(r.nodes());
                 default -> throw new IllegalStateException("ViewerRequest.read let " + r.type() + " through");
@@ -102,39 +99,30 @@ final class SenderConnection extends Connection {
     }
 
     /**
-     * A plot's history: numbers as numbers ({@link EventCodec#writeNumeric}). From the cache, each event's bytes
-     * are encoded once and kept, so the answer is array copies; else cache and database merged, encoded now.
+     * An answer the cache holds whole is found and sent while the writer and the receivers pause for it
+     * ({@link org.fdnet.logger.store.QueryPriority}); one that needs the database is not, since the writer must
+     * flush first.
      */
-    private void historyNumbers(int id, int[] nodes, long from, long to) throws IOException {
-        List<CachedEvent> cached = viewers.fromCache(nodes, from, to);
-        if (cached == null) {
-            sendHistory(id, events(nodes, from, to), EventCodec::writeNumeric);
-            return;
-        }
-        for (int start = 0; start < cached.size(); start += Protocol.MAX_EVENTS_PER_FRAME) {
-            List<CachedEvent> chunk = cached.subList(start, Math.min(cached.size(), start + Protocol.MAX_EVENTS_PER_FRAME));
-            sendUnflushed(w -> {
-                w.begin(MessageType.HISTORY_CHUNK).putInt(id).putInt(chunk.size());
-                chunk.forEach(e -> putKept(w, e));
-            });
-        }
-        send(w -> w.begin(MessageType.HISTORY_END).putInt(id).putLong(cached.size()));
-    }
-
     private void history(int id, int[] nodes, long from, long to) throws IOException {
-        sendHistory(id, events(nodes, from, to), EventCodec::write);
+        viewers.queries().begin();
+        try {
+            List<NetworkEvent> cached = viewers.fromCache(nodes, from, to);
+            if (cached != null) {
+                sendHistory(id, cached);
+                return;
+            }
+        } finally {
+            viewers.queries().end();
+        }
+        sendHistory(id, events(nodes, from, to));
     }
 
-    private interface EventEncoding {
-        void put(FrameWriter w, NetworkEvent e);
-    }
-
-    private void sendHistory(int id, List<NetworkEvent> events, EventEncoding encoding) throws IOException {
+    private void sendHistory(int id, List<NetworkEvent> events) throws IOException {
         for (int start = 0; start < events.size(); start += Protocol.MAX_EVENTS_PER_FRAME) {
             List<NetworkEvent> chunk = events.subList(start, Math.min(events.size(), start + Protocol.MAX_EVENTS_PER_FRAME));
             sendUnflushed(w -> {
                 w.begin(MessageType.HISTORY_CHUNK).putInt(id).putInt(chunk.size());
-                chunk.forEach(e -> encoding.put(w, e));
+                chunk.forEach(e -> EventCodec.write(w, e));
             });
         }
         send(w -> w.begin(MessageType.HISTORY_END).putInt(id).putLong(events.size()));
@@ -158,21 +146,6 @@ final class SenderConnection extends Connection {
             w.begin(MessageType.MONITOR_EVENTS).putInt(events.size());
             events.forEach(e -> EventCodec.write(w, e.event()));
         });
-    }
-
-    /**
-     * The cached event's bytes as {@link EventCodec#writeNumeric} encodes them, encoded and kept the first time a
-     * viewer asks for it: later answers (the next query of a plot's window, another viewer) are array copies.
-     */
-    private static void putKept(FrameWriter w, CachedEvent e) {
-        byte[] kept = e.wire();
-        if (kept != null) {
-            w.putBytes(kept);
-            return;
-        }
-        int mark = w.position();
-        EventCodec.writeNumeric(w, e.event());
-        e.keepWire(w.bytesSince(mark));
     }
 
     @Override

@@ -7,9 +7,9 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import org.fdnet.event.NetworkEvent;
-import org.fdnet.logger.cache.CachedEvent;
 import org.fdnet.logger.cache.EventCache;
 import org.fdnet.logger.store.EventStore;
+import org.fdnet.logger.store.QueryPriority;
 import org.fdnet.logger.store.SourceDirectory;
 import org.fdnet.logger.writer.BatchWriter;
 
@@ -24,17 +24,17 @@ import org.fdnet.logger.writer.BatchWriter;
 public final class ViewerService {
     private static final Comparator<NetworkEvent> TIME_ORDER =
             Comparator.comparingLong(NetworkEvent::time).thenComparingInt(NetworkEvent::sourceId);
-    private static final Comparator<CachedEvent> CACHED_TIME_ORDER =
-            Comparator.comparingLong(CachedEvent::time).thenComparingInt(CachedEvent::sourceId);
 
     private final EventCache cache;
     private final EventStore store;
     private final SourceDirectory directory;
     private final BatchWriter writer;
     private final long flushTimeoutMillis;
+    private final QueryPriority queries;
 
     public ViewerService(EventCache cache, EventStore store, SourceDirectory directory, BatchWriter writer,
-                         long flushTimeoutMillis) {
+                         long flushTimeoutMillis, QueryPriority queries) {
+        this.queries = queries;
         this.cache = cache;
         this.store = store;
         this.directory = directory;
@@ -50,47 +50,40 @@ public final class ViewerService {
         return cache;
     }
 
-    /**
-     * The answer from the cache alone, as the cached events (whose wire bytes a sender keeps and reuses), in
-     * time order; {@code null} when the cache does not hold every event of the range (then {@link #history}
-     * asks the database too).
-     */
-    public List<CachedEvent> fromCache(int[] sourceIds, long from, long to) {
-        if (sourceIds.length == 1) {
-            EventCache.CachedAnswer a = cache.cachedHistory(sourceIds[0], from, to, directory.seenFromStart(sourceIds[0]));
-            return a.complete() ? a.events() : null; // one node's timeline is already in time order
-        }
-        List<CachedEvent> all = new ArrayList<>();
-        for (int id : sourceIds) {
-            EventCache.CachedAnswer a = cache.cachedHistory(id, from, to, directory.seenFromStart(id));
-            if (!a.complete()) {
-                return null;
-            }
-            all.addAll(a.events());
-        }
-        all.sort(CACHED_TIME_ORDER);
-        return all;
+    /** Tells the writer and the receivers that a query is being answered (they pause while one is). */
+    public QueryPriority queries() {
+        return queries;
     }
 
-    public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws SQLException {
+    /** The answer from the cache alone, in time order; {@code null} when the cache lacks some of the range. */
+    public List<NetworkEvent> fromCache(int[] sourceIds, long from, long to) {
         if (sourceIds.length == 1) {
             EventCache.CacheAnswer a = cache.history(sourceIds[0], from, to, directory.seenFromStart(sourceIds[0]));
-            if (a.complete()) {
-                return a.events(); // one node's timeline is already in time order: no copy, no sort
-            }
+            return a.complete() ? a.events() : null; // one node's timeline is already in time order: no copy, no sort
         }
         List<NetworkEvent> cached = new ArrayList<>();
-        List<Integer> incomplete = new ArrayList<>();
         for (int id : sourceIds) {
             EventCache.CacheAnswer a = cache.history(id, from, to, directory.seenFromStart(id));
             if (!a.complete()) {
-                incomplete.add(id);
+                return null;
             }
             cached.addAll(a.events());
         }
-        if (incomplete.isEmpty()) {
-            cached.sort(TIME_ORDER);
+        cached.sort(TIME_ORDER);
+        return cached;
+    }
+
+    /** The answer from the cache, or else from cache and database merged (the writer flushes first). */
+    public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws SQLException {
+        List<NetworkEvent> cached = fromCache(sourceIds, from, to);
+        if (cached != null) {
             return cached;
+        }
+        List<Integer> incomplete = new ArrayList<>();
+        for (int id : sourceIds) {
+            if (!cache.history(id, from, to, directory.seenFromStart(id)).complete()) {
+                incomplete.add(id);
+            }
         }
         writer.flush(flushTimeoutMillis);
         List<NetworkEvent> merged = new ArrayList<>();

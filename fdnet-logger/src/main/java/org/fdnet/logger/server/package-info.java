@@ -7,8 +7,7 @@
  *   core   ─TCP 5555─▶ TcpServer ─▶ ConnectionFactory ─▶ ReceiverConnection ─EVENTS─▶ EventCache
  *                                                           ◀─ACK(seq)── writer commits (RunProgress)
  *   viewer ─TCP 5556─▶ TcpServer ─▶ ConnectionFactory ─▶ SenderConnection ─HISTORY─▶ ViewerService (cache + DB)
- *                                                           ├─HISTORY_NUMBERS─▶ ViewerService.fromCache ─▶
- *                                                           │     each CachedEvent's kept bytes (encoded once)
+ *                                                           │     values in binary (a number: 22 bytes, no text)
  *                                                           └─MONITOR─▶ MonitorStream ◀─offer── EventCache
  *   bad frame → ERROR + close that connection only (logged); states: waiting → activated → stopped
  * </pre>

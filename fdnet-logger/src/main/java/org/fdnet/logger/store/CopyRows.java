@@ -2,11 +2,13 @@ package org.fdnet.logger.store;
 
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
+import org.fdnet.event.TypedValue;
 
 /**
  * Rows in PostgreSQL's COPY text format, built in one reusable byte buffer: tab between columns, newline
  * after each row, and the four characters COPY treats specially (backslash, tab, newline, carriage return)
- * escaped inside text values.
+ * escaped inside text values. A Data's typed value becomes its text here ({@link #value}), straight into the
+ * buffer: a number costs no String.
  */
 final class CopyRows {
     /** The tens and ones digit of 0..99: numbers are written two digits per division (time stamps have 16). */
@@ -97,6 +99,33 @@ final class CopyRows {
                 case '\r' -> put2('\\', 'r');
                 default -> buf[len++] = (byte) c;
             }
+        }
+        return this;
+    }
+
+    /** A Data's value in the text form the {@code value} column holds ({@link TypedValue#text()}'s form). */
+    CopyRows value(TypedValue v) {
+        switch (v.type()) {
+            case LONG -> number(v.longValue());
+            case DOUBLE -> {
+                separator();
+                ensure(32);
+                len = DoubleText.write(v.doubleValue(), buf, len);
+            }
+            case DOUBLES -> {
+                separator();
+                int n = v.length();
+                for (int i = 0; i < n; i++) {
+                    ensure(33);
+                    if (i > 0) {
+                        buf[len++] = ',';
+                    }
+                    len = DoubleText.write(v.element(i), buf, len);
+                }
+            }
+            case BOOLEAN -> text(v.booleanValue() ? "true" : "false");
+            case STRING -> text(v.stringValue());
+            case BYTES -> text(v.text()); // Base64: no character COPY escapes
         }
         return this;
     }

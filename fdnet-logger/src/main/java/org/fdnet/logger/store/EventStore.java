@@ -22,6 +22,7 @@ import org.fdnet.event.NetworkCommandEvent;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.event.RelationValueEvent;
+import org.fdnet.event.TypedValue;
 import org.fdnet.event.ValueType;
 import org.fdnet.event.wire.LoggedNode;
 import org.fdnet.logger.cache.CachedEvent;
@@ -29,6 +30,8 @@ import org.fdnet.logger.cache.RunProgress;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.postgresql.PGConnection;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 import org.postgresql.copy.CopyIn;
 import org.postgresql.copy.CopyManager;
 
@@ -39,6 +42,7 @@ import org.postgresql.copy.CopyManager;
  * committed sequence number. The other methods serve handshakes and viewers from a small pool.
  */
 public final class EventStore implements AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(EventStore.class);
     private static final Comparator<CachedEvent> KEY_ORDER =
             Comparator.comparingInt(CachedEvent::sourceId).thenComparingLong(CachedEvent::time);
 
@@ -49,9 +53,24 @@ public final class EventStore implements AutoCloseable {
     /** One COPY buffer per writer thread: with several writer connections, batches are encoded at once. */
     private final ThreadLocal<CopyRows> copyRows = ThreadLocal.withInitial(CopyRows::new);
 
+    /**
+     * Rows built and sent per COPY chunk: between two chunks the writer yields to viewer queries
+     * ({@link QueryPriority}). Small enough that what the backend still has to read when the writer pauses is a
+     * few milliseconds of its work (it takes 200,000-400,000 rows/s), large enough that a chunk is tens of
+     * kilobytes (the driver sends in 8 KiB writes anyway).
+     */
+    static final int COPY_CHUNK_ROWS = 1024;
+    private final QueryPriority queries;
+
     public EventStore(DatabaseTarget target) {
+        this(target, new QueryPriority(0)); // no viewers: never pauses
+    }
+
+    /** A store whose writers pause between COPY chunks while {@code queries} says a viewer's query is answered. */
+    public EventStore(DatabaseTarget target, QueryPriority queries) {
         this.target = target;
         this.pool = new ConnectionPool(target, 8);
+        this.queries = queries;
     }
 
     public DatabaseTarget target() {
@@ -131,19 +150,15 @@ public final class EventStore implements AutoCloseable {
             saveNames(c, names);
             CopyManager copy = c.unwrap(PGConnection.class).getCopyAPI();
             sortByKey(data);
-            rows.clear();
-            for (CachedEvent e : data) {
-                DataValueEvent d = (DataValueEvent) e.event();
-                rows.number(d.sourceId()).number(d.time()).text(d.value()).number(d.type().code()).endRow();
-            }
-            copy(copy, rows, "COPY datavalue_log (sourceid, time, value, typevalue) FROM STDIN");
+            copyInChunks(copy, rows, data, "COPY datavalue_log (sourceid, time, value, typevalue) FROM STDIN", e -> {
+                DataValueEvent d = (DataValueEvent) e;
+                rows.number(d.sourceId()).number(d.time()).value(d.value()).number(d.type().code()).endRow();
+            });
             sortByKey(relations);
-            rows.clear();
-            for (CachedEvent e : relations) {
-                RelationValueEvent r = (RelationValueEvent) e.event();
+            copyInChunks(copy, rows, relations, "COPY procvalue_log (sourceid, time, value) FROM STDIN", e -> {
+                RelationValueEvent r = (RelationValueEvent) e;
                 rows.number(r.sourceId()).number(r.time()).text(r.value()).endRow();
-            }
-            copy(copy, rows, "COPY procvalue_log (sourceid, time, value) FROM STDIN");
+            });
             rows.clear();
             for (CachedEvent e : commands) {
                 NetworkCommandEvent n = (NetworkCommandEvent) e.event();
@@ -258,6 +273,40 @@ public final class EventStore implements AutoCloseable {
             lastSeq.merge(run, max, Math::max);
         }
         return lastSeq;
+    }
+
+    /** Appends one event's row to the COPY buffer. */
+    @FunctionalInterface
+    private interface Row {
+        void put(NetworkEvent e);
+    }
+
+    /**
+     * One COPY statement for {@code events}, built and sent {@link #COPY_CHUNK_ROWS} rows at a time, yielding to
+     * viewer queries between chunks (the backend then has nothing to read and sleeps too).
+     */
+    private void copyInChunks(CopyManager copy, CopyRows rows, List<CachedEvent> events, String sql, Row row)
+            throws SQLException {
+        if (events.isEmpty()) {
+            return;
+        }
+        CopyIn in = copy.copyIn(sql);
+        try {
+            for (int start = 0; start < events.size(); start += COPY_CHUNK_ROWS) {
+                rows.clear();
+                int end = Math.min(events.size(), start + COPY_CHUNK_ROWS);
+                for (int i = start; i < end; i++) {
+                    row.put(events.get(i).event());
+                }
+                in.writeToCopy(rows.bytes(), 0, rows.length());
+                queries.yieldToQueries();
+            }
+            in.endCopy();
+        } finally {
+            if (in.isActive()) {
+                in.cancelCopy();
+            }
+        }
     }
 
     private static void copy(CopyManager copy, CopyRows rows, String sql) throws SQLException {
@@ -397,6 +446,20 @@ public final class EventStore implements AutoCloseable {
                         new NodeRef(rs.getString(4), rs.getString(5))));
     }
 
+    /**
+     * A stored value's text read back as its type. A row this logger did not write may hold text that is not of
+     * its type: it is kept as a string (shown, not plotted) and named in the log rather than failing the query.
+     */
+    private static TypedValue storedValue(ValueType type, String text, int sourceId) {
+        try {
+            return TypedValue.parse(type, text);
+        } catch (IllegalArgumentException notOfItsType) {
+            LOG.warn("datavalue_log: source {} has a {} value that is not one ({}); shown as text", sourceId, type,
+                    notOfItsType.getMessage());
+            return TypedValue.of(text);
+        }
+    }
+
     /** The first id of a fresh block of {@link Schema#SOURCE_BLOCK} global source ids. */
     public int reserveSourceBlock() throws SQLException {
         return query("SELECT nextval('fdnet_sourceid_block')", rs -> (int) rs.getLong(1)).get(0);
@@ -414,8 +477,8 @@ public final class EventStore implements AutoCloseable {
                 bind(ps, ids, from, to);
                 try (ResultSet rs = ps.executeQuery()) {
                     while (rs.next()) {
-                        out.add(new DataValueEvent(rs.getInt(1), rs.getLong(2), ValueType.fromCode(rs.getInt(4)),
-                                rs.getString(3)));
+                        out.add(new DataValueEvent(rs.getInt(1), rs.getLong(2),
+                                storedValue(ValueType.fromCode(rs.getInt(4)), rs.getString(3), rs.getInt(1))));
                     }
                 }
             }

@@ -28,7 +28,7 @@ final class CacheEntryTableModel extends ListTableModel<CacheEntry> {
 
     private static String shown(CacheEntry e) {
         if (e.event() instanceof DataValueEvent d) {
-            return d.value();
+            return d.value().text();
         }
         if (e.event() instanceof RelationValueEvent r) {
             return r.value();

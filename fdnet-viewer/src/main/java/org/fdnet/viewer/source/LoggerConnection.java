@@ -125,7 +125,7 @@ public final class LoggerConnection implements AutoCloseable {
         if (offset == 0 || !(e instanceof DataValueEvent v)) {
             return e;
         }
-        return new DataValueEvent(v.sourceId(), v.time() - offset, v.type(), v.value());
+        return new DataValueEvent(v.sourceId(), v.time() - offset, v.value());
     }
 
     /**

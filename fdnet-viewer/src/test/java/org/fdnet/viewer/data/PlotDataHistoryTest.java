@@ -10,6 +10,7 @@ import java.util.List;
 import org.fdnet.event.DataValueEvent;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.RelationValueEvent;
+import org.fdnet.event.TypedValue;
 import org.fdnet.event.ValueType;
 import org.fdnet.event.wire.EventCodec;
 import org.fdnet.event.wire.Frame;
@@ -51,7 +52,9 @@ class PlotDataHistoryTest {
         List<NetworkEvent> events = new ArrayList<>();
         for (int i = 0; i < 500; i++) {
             long t = 1000L + i;
-            events.add(new DataValueEvent(1, t, ValueType.DOUBLE, i % 50 == 7 ? "oops" : Double.toString(Math.sin(i))));
+            // now and then a value the logger could only give back as text (a stored row that was not a number)
+            events.add(i % 50 == 7 ? new DataValueEvent(1, t, TypedValue.of("oops"))
+                    : new DataValueEvent(1, t, TypedValue.of(Math.sin(i))));
             events.add(new DataValueEvent(2, t, ValueType.LONG, Long.toString(i * 1_000_003L)));
             events.add(new DataValueEvent(3, t, ValueType.BOOLEAN, i % 3 == 0 ? "true" : "false"));
             events.add(new DataValueEvent(4, t, ValueType.DOUBLES, i + "," + (i * 0.5) + (i > 250 ? ",1" : "")));

@@ -77,7 +77,7 @@ final class DemoMeter implements EventSink {
             marginSource = n.sourceId();
         } else if (event instanceof DataValueEvent d && d.sourceId() == marginSource) {
             if (marginInitialSeen) {
-                take(d.value());
+                take(d.value().text());
             }
             marginInitialSeen = true; // the first is the Data's initial value (0), logged before Balance computed one
         } else if (marginSource < 0 && event instanceof RelationValueEvent r) {

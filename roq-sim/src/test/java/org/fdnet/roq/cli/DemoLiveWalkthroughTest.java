@@ -145,7 +145,7 @@ class DemoLiveWalkthroughTest {
             List<double[]> out = new ArrayList<>();
             for (NetworkEvent e : events) {
                 if (e instanceof DataValueEvent d && d.sourceId() == source) {
-                    String[] parts = d.value().replaceAll("[\\[\\]\\s]", "").split(",");
+                    String[] parts = d.value().text().replaceAll("[\\[\\]\\s]", "").split(",");
                     out.add(new double[] {Double.parseDouble(parts[0]), Double.parseDouble(parts[1])});
                 }
             }

@@ -269,7 +269,10 @@ public final class LoggerClient implements EventSink {
         if (welcome.type() != MessageType.WELCOME) {
             throw new ProtocolException("expected WELCOME, got " + welcome.type());
         }
-        welcome.getShort();
+        int version = welcome.getShort();
+        if (version != Protocol.VERSION) {
+            throw new ProtocolException("the logger speaks protocol version " + version + ", this core version " + Protocol.VERSION);
+        }
         long committed = welcome.getLong();
         if (networkRun != null) {
             networkRun.write(w);

@@ -37,7 +37,7 @@ import org.slf4j.LoggerFactory;
  * <pre>
  *   nodes("Arm/")  ─LIST_NODES─▶ logger ─NODE_LIST─▶ List&lt;LoggedNode&gt;
  *   history(ids, from, to) ─HISTORY─▶ logger ─HISTORY_CHUNK*, HISTORY_END─▶ events in time order
- *   historyColumns(ids, from, to) ─HISTORY_NUMBERS─▶ logger ─(the same, numbers as f64)─▶ HistoryColumns
+ *   historyColumns(ids, from, to) ─HISTORY─▶ logger ─(the same answer, numbers read in place)─▶ HistoryColumns
  *   monitor(ids) ─MONITOR─▶ logger ─MONITOR_EVENTS (live)─▶ listener
  * </pre>
  */
@@ -104,11 +104,11 @@ public final class ViewerClient implements AutoCloseable {
 
     /**
      * The same answer as {@link #history}, as columns: times, source ids and numeric values without an object
-     * or a String per event, the logger sending numbers as numbers (HISTORY_NUMBERS) — the path for plotting.
+     * or a String per event (numbers are 8 bytes on the wire, read in place) — the path for plotting.
      */
     public HistoryColumns historyColumns(int[] sourceIds, long from, long to) throws IOException {
         LoggerAnswers.Request r = new LoggerAnswers.Request(new HistoryColumns());
-        askHistory(MessageType.HISTORY_NUMBERS, sourceIds, from, to, r);
+        askHistory(MessageType.HISTORY, sourceIds, from, to, r);
         return r.columns;
     }
 

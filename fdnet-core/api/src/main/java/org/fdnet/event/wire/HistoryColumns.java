@@ -3,34 +3,32 @@ package org.fdnet.event.wire;
 import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
 import java.nio.ByteOrder;
-import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import org.fdnet.event.DataValueEvent;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.RelationValueEvent;
+import org.fdnet.event.TypedValue;
 import org.fdnet.event.ValueType;
 
 /**
  * A history answer kept as columns, for a viewer that plots it: times, source ids, and each Data value of
- * type {@code LONG} or {@code DOUBLE} as a double — sent as a number by the logger (an answer to
- * {@link MessageType#HISTORY_NUMBERS}), or else read from its text straight from the frame's bytes. No object
- * and no String is made per event; a value's text is kept as bytes and becomes a String only when asked
- * ({@link #text}), an event only when asked ({@link #event}). Commands and node names (rare in a plot's
- * range) are decoded as events when they arrive.
+ * type {@code LONG} or {@code DOUBLE} as its 8 bytes (the wire's binary value, {@link ValueCodec}). No object
+ * is made per number; any other event (a vector, a string, a Relation's status, a command — rare in a plot's
+ * range) is decoded as an event when it arrives. A number's text is made only when asked ({@link #text}), its
+ * event only when asked ({@link #event}).
  *
  * <pre>
- *   HISTORY_CHUNK ──{@link #append}──▶ times[] · sources[] · numbers[] (+ hasNumber) · text bytes + offsets
- *   (events as numbers: 8 bytes read; as text: parsed by AsciiNumber)
- *                                       └─▶ event(i) / text(i) on demand
+ *   HISTORY_CHUNK ──{@link #appendAll}──▶ times[] · sources[] · valueTypes[] · numbers (8 bytes each, read in place)
+ *                                      └─ other events decoded ──▶ event(i) / text(i) on demand
  * </pre>
  *
  * Built by one thread (the client's reader), then handed over whole; not for concurrent building.
  */
 public final class HistoryColumns {
-    private static final int VALUE_TYPE_CODES = ValueType.values().length; // codes 1..n
-    private static final int NUMBER_EVENT_BYTES = 1 + 4 + 8 + 8;
+    /** A Data's number event: head (13 bytes), value type (1), value (8). */
+    private static final int NUMBER_EVENT_BYTES = 1 + 4 + 8 + ValueCodec.NUMBER_BYTES;
     private static final VarHandle LONG_AT = MethodHandles.byteArrayViewVarHandle(long[].class, ByteOrder.BIG_ENDIAN);
     private static final VarHandle INT_AT = MethodHandles.byteArrayViewVarHandle(int[].class, ByteOrder.BIG_ENDIAN);
     private static final int DOUBLE = ValueType.DOUBLE.code();
@@ -38,13 +36,10 @@ public final class HistoryColumns {
     private int size;
     private long[] times = new long[16];
     private int[] sources = new int[16];
-    private byte[] kinds = new byte[16];
-    private byte[] valueTypes = new byte[16];
-    private double[] numbers = new double[16];
-    private boolean[] hasNumber = new boolean[16];
-    private int[] textEnd = new int[16];
-    private byte[] text = new byte[256];
-    private int textLength;
+    /** The value type code of a Data's number; 0 for an event kept in {@link #decoded}. */
+    private byte[] numberTypes = new byte[16];
+    /** A LONG as itself, a DOUBLE as its bits: exact either way. */
+    private long[] numberBits = new long[16];
     private NetworkEvent[] decoded;
 
     /** Makes room for {@code more} events (a chunk's count) at once. */
@@ -54,11 +49,8 @@ public final class HistoryColumns {
             int n = Math.max(need, times.length * 2);
             times = Arrays.copyOf(times, n);
             sources = Arrays.copyOf(sources, n);
-            kinds = Arrays.copyOf(kinds, n);
-            valueTypes = Arrays.copyOf(valueTypes, n);
-            numbers = Arrays.copyOf(numbers, n);
-            hasNumber = Arrays.copyOf(hasNumber, n);
-            textEnd = Arrays.copyOf(textEnd, n);
+            numberTypes = Arrays.copyOf(numberTypes, n);
+            numberBits = Arrays.copyOf(numberBits, n);
             if (decoded != null) {
                 decoded = Arrays.copyOf(decoded, n);
             }
@@ -66,28 +58,23 @@ public final class HistoryColumns {
     }
 
     /**
-     * Reads the frame's next {@code n} events into the columns: numbers (kinds 5 and 6, the usual content of a
-     * plot's answer) straight from the frame's array, 21 bytes each; anything else through {@link #append}.
+     * Reads the frame's next {@code n} events into the columns: a Data's number (the usual content of a plot's
+     * answer) straight from the frame's array, 22 bytes each; anything else through {@link #append}.
      */
     public void appendAll(Frame f, int n) throws ProtocolException {
         reserve(n);
         byte[] b = f.array();
         for (int i = 0; i < n; i++) {
             int at = f.arrayPosition();
-            int kind = f.remainingBytes() >= NUMBER_EVENT_BYTES ? b[at] : 0;
-            if (kind != EventCodec.DOUBLE_VALUE && kind != EventCodec.LONG_VALUE) {
+            int type = f.remainingBytes() >= NUMBER_EVENT_BYTES && b[at] == EventCodec.DATA ? b[at + 13] : 0;
+            if (type != DOUBLE && type != LONG) {
                 append(f);
                 continue;
             }
-            long bits = (long) LONG_AT.get(b, at + 13);
-            boolean isDouble = kind == EventCodec.DOUBLE_VALUE;
-            times[size] = (long) LONG_AT.get(b, at + 5);
             sources[size] = (int) INT_AT.get(b, at + 1);
-            kinds[size] = (byte) kind;
-            valueTypes[size] = (byte) (isDouble ? DOUBLE : LONG);
-            numbers[size] = isDouble ? Double.longBitsToDouble(bits) : bits;
-            hasNumber[size] = true;
-            textEnd[size] = textLength;
+            times[size] = (long) LONG_AT.get(b, at + 5);
+            numberTypes[size] = (byte) type;
+            numberBits[size] = (long) LONG_AT.get(b, at + 14);
             size++;
             f.skip(NUMBER_EVENT_BYTES);
         }
@@ -96,69 +83,21 @@ public final class HistoryColumns {
     /** Reads the frame's next event (the {@link EventCodec} layout) into the columns. */
     public void append(Frame f) throws ProtocolException {
         reserve(1);
-        int kind = f.peekByte();
-        if (kind != EventCodec.DATA && kind != EventCodec.RELATION && kind != EventCodec.DOUBLE_VALUE
-                && kind != EventCodec.LONG_VALUE) {
-            NetworkEvent e = EventCodec.read(f);
+        NetworkEvent e = EventCodec.read(f);
+        times[size] = e.time();
+        sources[size] = e.sourceId();
+        if (e instanceof DataValueEvent d && d.value().isNumber()) {
+            numberTypes[size] = (byte) d.type().code();
+            numberBits[size] = d.type() == ValueType.LONG ? d.value().longValue()
+                    : Double.doubleToRawLongBits(d.value().doubleValue());
+        } else {
             if (decoded == null) {
                 decoded = new NetworkEvent[times.length];
             }
             decoded[size] = e;
-            put(kind, e.sourceId(), e.time(), 0);
-            textEnd[size] = textLength;
-            size++;
-            return;
-        }
-        f.getByte();
-        int source = f.getInt();
-        long time = f.getLong();
-        if (kind == EventCodec.DOUBLE_VALUE || kind == EventCodec.LONG_VALUE) {
-            long bits = f.getLong();
-            put(kind, source, time, kind == EventCodec.DOUBLE_VALUE ? DOUBLE : LONG);
-            numbers[size] = kind == EventCodec.DOUBLE_VALUE ? Double.longBitsToDouble(bits) : bits;
-            hasNumber[size] = true;
-            textEnd[size] = textLength;
-            size++;
-            return;
-        }
-        int type = kind == EventCodec.DATA ? f.getByte() : 0;
-        if (kind == EventCodec.DATA && (type < 1 || type > VALUE_TYPE_CODES)) {
-            throw new ProtocolException("unknown value type code " + type);
-        }
-        int start = f.skipString();
-        int end = f.arrayPosition();
-        byte[] b = f.array();
-        put(kind, source, time, type);
-        keepText(b, start, end);
-        if (type == DOUBLE || type == LONG) {
-            try {
-                numbers[size] = type == DOUBLE ? AsciiNumber.parseDouble(b, start, end)
-                        : AsciiNumber.parseLong(b, start, end);
-                hasNumber[size] = true;
-            } catch (NumberFormatException notANumber) {
-                hasNumber[size] = false; // kept as text: the viewer counts it as not plotted
-            }
+            numberTypes[size] = 0;
         }
         size++;
-    }
-
-    private void put(int kind, int source, long time, int type) {
-        times[size] = time;
-        sources[size] = source;
-        kinds[size] = (byte) kind;
-        valueTypes[size] = (byte) type;
-        hasNumber[size] = false;
-        numbers[size] = 0;
-    }
-
-    private void keepText(byte[] b, int start, int end) {
-        int n = end - start;
-        if (textLength + n > text.length) {
-            text = Arrays.copyOf(text, Math.max(text.length * 2, textLength + n));
-        }
-        System.arraycopy(b, start, text, textLength, n);
-        textLength += n;
-        textEnd[size] = textLength;
     }
 
     public int size() {
@@ -182,18 +121,20 @@ public final class HistoryColumns {
 
     /** Whether event {@code i} is a Data's value. */
     public boolean isDataValue(int i) {
-        int k = kinds[check(i)];
-        return k == EventCodec.DATA || k == EventCodec.DOUBLE_VALUE || k == EventCodec.LONG_VALUE;
+        return numberTypes[check(i)] != 0 || decoded[i] instanceof DataValueEvent;
     }
 
     /** The value type of a Data's value; {@code null} for any other event. */
     public ValueType valueType(int i) {
-        return isDataValue(i) ? ValueType.fromCode(valueTypes[i]) : null;
+        if (numberTypes[check(i)] != 0) {
+            return ValueType.fromCode(numberTypes[i]);
+        }
+        return decoded[i] instanceof DataValueEvent d ? d.type() : null;
     }
 
-    /** Whether {@link #number} holds the value: a Data's {@code LONG} or {@code DOUBLE} value that parses. */
+    /** Whether {@link #number} holds the value: a Data's {@code LONG} or {@code DOUBLE} value. */
     public boolean hasNumber(int i) {
-        return hasNumber[check(i)];
+        return numberTypes[check(i)] != 0;
     }
 
     /** The value as a double (only when {@link #hasNumber}). */
@@ -201,32 +142,31 @@ public final class HistoryColumns {
         if (!hasNumber(i)) {
             throw new IllegalStateException("event " + i + " has no numeric value");
         }
-        return numbers[i];
+        return numberTypes[i] == DOUBLE ? Double.longBitsToDouble(numberBits[i]) : numberBits[i];
     }
 
     /** A Data's or Relation's value as text (made now); {@code null} for commands and node names. */
     public String text(int i) {
-        int k = kinds[check(i)];
-        if (k == EventCodec.DOUBLE_VALUE) {
-            return Double.toString(numbers[i]); // the logger sent it as a number only when this is its text
-        } else if (k == EventCodec.LONG_VALUE) {
-            return Long.toString((long) numbers[i]);
-        } else if (k != EventCodec.DATA && k != EventCodec.RELATION) {
-            return null;
+        if (numberTypes[check(i)] != 0) {
+            return typed(i).text();
         }
-        int start = i == 0 ? 0 : textEnd[i - 1];
-        return new String(text, start, textEnd[i] - start, StandardCharsets.UTF_8);
+        NetworkEvent e = decoded[i];
+        if (e instanceof DataValueEvent d) {
+            return d.value().text();
+        }
+        return e instanceof RelationValueEvent r ? r.value() : null;
     }
 
-    /** Event {@code i} as an object (made now for values). */
+    /** Event {@code i} as an object (made now for numbers). */
     public NetworkEvent event(int i) {
-        int k = kinds[check(i)];
-        if (k == EventCodec.DATA || k == EventCodec.DOUBLE_VALUE || k == EventCodec.LONG_VALUE) {
-            return new DataValueEvent(sources[i], times[i], ValueType.fromCode(valueTypes[i]), text(i));
-        } else if (k == EventCodec.RELATION) {
-            return new RelationValueEvent(sources[i], times[i], text(i));
+        if (numberTypes[check(i)] != 0) {
+            return new DataValueEvent(sources[i], times[i], typed(i));
         }
         return decoded[i];
+    }
+
+    private TypedValue typed(int i) {
+        return numberTypes[i] == DOUBLE ? TypedValue.of(Double.longBitsToDouble(numberBits[i])) : TypedValue.of(numberBits[i]);
     }
 
     /** Every event as an object, in order. */

@@ -30,11 +30,8 @@ public enum MessageType {
     LIST_NODES(26),
     /** logger → viewer: request id, nodes. */
     NODE_LIST(27),
-    /**
-     * viewer → logger: as {@link #HISTORY}; the answer's events may come as numbers ({@link EventCodec#writeNumeric}):
-     * a plot's history without text to parse.
-     */
-    HISTORY_NUMBERS(28),
+    // 28 was HISTORY_NUMBERS in protocol version 1 (numbers as numbers in plot answers): since version 2 every
+    // answer carries values in binary. Not reused, so a stray version-1 request stays an unknown type.
     /** viewer → logger: request id; which streams the logger holds and the network runs they belong to. */
     LIST_RUNS(29),
     /** logger → viewer: request id, streams ({@link LoggedRun}). */

@@ -1,14 +1,15 @@
 package org.fdnet.event.wire;
 
 /**
- * The constants of the logger protocol (see {@code docs/protocol.md}). Version 1. Every connection starts
+ * The constants of the logger protocol (see {@code docs/protocol.md}). Version 2: a Data's
+ * value travels in binary (version 1 sent it as text; a version-1 peer is refused with both versions named). Every connection starts
  * with a {@link MessageType#HELLO} from the client naming the magic, the version and the role; the server
  * answers {@link MessageType#WELCOME} or {@link MessageType#ERROR} and closes.
  */
 public final class Protocol {
     /** {@code "FDNL"}: the first four payload bytes of every HELLO. */
     public static final int MAGIC = 0x46444E4C;
-    public static final int VERSION = 1;
+    public static final int VERSION = 2;
     /** Largest frame (type byte + payload) a peer may send unless configured otherwise: 1 MiB. */
     public static final int DEFAULT_MAX_FRAME_BYTES = 1 << 20;
     /** The events one EVENTS frame carries at most: keeps frames well under the default maximum. */

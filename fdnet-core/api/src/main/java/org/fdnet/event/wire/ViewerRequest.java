@@ -2,7 +2,7 @@ package org.fdnet.event.wire;
 
 /**
  * A viewer's request to the logger's sender server, read and checked whole before the logger acts on it:
- * {@code LIST_NODES} (id, name filter), {@code LIST_RUNS} (id), {@code HISTORY} / {@code HISTORY_NUMBERS} (id, node ids, from, to),
+ * {@code LIST_NODES} (id, name filter), {@code LIST_RUNS} (id), {@code HISTORY} (id, node ids, from, to),
  * {@code MONITOR} / {@code UNMONITOR} (node ids). The viewer's client writes it with {@link #write}.
  */
 public record ViewerRequest(MessageType type, int id, String filter, int[] nodes, long from, long to) {
@@ -18,7 +18,7 @@ public record ViewerRequest(MessageType type, int id, String filter, int[] nodes
         return new ViewerRequest(MessageType.LIST_RUNS, id, "", NO_NODES, 0, 0);
     }
 
-    /** {@code type} is {@link MessageType#HISTORY} or {@link MessageType#HISTORY_NUMBERS}. */
+    /** {@code type} is {@link MessageType#HISTORY}. */
     public static ViewerRequest history(MessageType type, int id, int[] nodes, long from, long to) {
         return new ViewerRequest(type, id, "", nodes, from, to);
     }
@@ -33,7 +33,7 @@ public record ViewerRequest(MessageType type, int id, String filter, int[] nodes
         switch (type) {
             case LIST_NODES -> w.putInt(id).putString(filter);
             case LIST_RUNS -> w.putInt(id);
-            case HISTORY, HISTORY_NUMBERS -> putNodes(w.putInt(id)).putLong(from).putLong(to);
+            case HISTORY -> putNodes(w.putInt(id)).putLong(from).putLong(to);
             default -> putNodes(w);
         }
     }
@@ -57,7 +57,7 @@ public record ViewerRequest(MessageType type, int id, String filter, int[] nodes
                 f.expectEnd();
                 return listRuns(id);
             }
-            case HISTORY, HISTORY_NUMBERS -> {
+            case HISTORY -> {
                 int id = f.getInt();
                 int[] nodes = nodeIds(f);
                 long from = f.getLong();

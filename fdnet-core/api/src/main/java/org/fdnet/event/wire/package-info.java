@@ -8,8 +8,9 @@
  *   a core's EVENTS frame ──EventsFrame.check (every event, no trailing bytes)──▶ the receiver takes its events
  *   a viewer's request ──ViewerRequest.write──▶ logger ──ViewerRequest.read (checked whole)──▶ sender server
  *
- *   a plot's history (HISTORY_NUMBERS): logger ──EventCodec.writeNumeric, bytes kept per cached event──▶
- *       HISTORY_CHUNK ──HistoryColumns.appendAll──▶ times[] · sources[] · numbers[] (text, events on demand)
+ *   a Data's value: TypedValue ──ValueCodec (u8 type, then binary: f64, i64, ...)──▶ the same TypedValue
+ *   a plot's history: logger ──HISTORY_CHUNK──▶ HistoryColumns.appendAll ──▶ times[] · sources[] · numbers
+ *       (8 bytes each, read in place; text and events on demand)
  * </pre>
  *
  * Every read is bounds-checked and fails with a {@link org.fdnet.event.wire.ProtocolException} that names

@@ -15,14 +15,20 @@ import org.fdnet.event.NetworkCommandEvent;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.event.RelationValueEvent;
-import org.fdnet.event.ValueType;
+import org.fdnet.event.TypedValue;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.junit.jupiter.api.Test;
 
 class EventCodecTest {
     private static final List<NetworkEvent> ALL = List.of(
-            new DataValueEvent(3, 17L, ValueType.DOUBLES, "0.5,1.5,\u00e9\u4e2d"),
+            new DataValueEvent(3, 11L, TypedValue.of(true)),
+            new DataValueEvent(3, 12L, TypedValue.of(Long.MIN_VALUE)),
+            new DataValueEvent(3, 13L, TypedValue.of(0.1 + 0.2)),
+            new DataValueEvent(3, 14L, TypedValue.of("\u00e9\u4e2d\ttab")),
+            new DataValueEvent(3, 15L, TypedValue.ofBytes(new byte[] {0, -1, 7})),
+            new DataValueEvent(3, 16L, TypedValue.ofDoubles()),
+            new DataValueEvent(3, 17L, TypedValue.ofDoubles(0.5, 1.5, Double.NEGATIVE_INFINITY)),
             new RelationValueEvent(4, 18L, "FAILED: java.lang.ArithmeticException: / by zero"),
             new NetworkCommandEvent(0, 19L, "controller", NetworkCommand.UNLOAD, "arm", "module"),
             new NodeNamedEvent(5, 20L, NodeKind.RELATION, new NodeRef("main", "Planner")));
@@ -139,10 +145,15 @@ class EventCodecTest {
 
     @Test
     void shouldRejectInSkipEveryMalformedEventThatReadRejects() throws IOException {
-        // kind, value type, command, node kind and a string longer than the frame: skip must fail where read fails
+        // kind, value type, boolean, counts, command, node kind and a string longer than the frame: skip must fail
+        // where read fails, with the same message
         List<byte[]> bad = List.of(
                 eventBytes(w -> w.putEventHead(9, 1, 2L).putString("x")),
                 eventBytes(w -> w.putEventHead(1, 1, 2L).putByte(77).putString("x")),
+                eventBytes(w -> w.putEventHead(1, 1, 2L).putByte(1).putByte(2)),
+                eventBytes(w -> w.putEventHead(1, 1, 2L).putByte(6).putInt(3).putLong(0).putLong(0)),
+                eventBytes(w -> w.putEventHead(1, 1, 2L).putByte(5).putInt(-1)),
+                eventBytes(w -> w.putEventHead(1, 1, 2L).putByte(3).putInt(0)),
                 eventBytes(w -> w.putEventHead(3, 1, 2L).putString("t").putByte(200).putString("p").putString("q")),
                 eventBytes(w -> w.putEventHead(4, 1, 2L).putByte(3).putString("m").putString("n")),
                 eventBytes(w -> w.putEventHead(2, 1, 2L).putInt(5000)));
@@ -156,6 +167,20 @@ class EventCodecTest {
             assertThatThrownBy(() -> EventCodec.skip(forSkip)).isInstanceOf(ProtocolException.class)
                     .hasMessage(byRead.getMessage());
         }
+    }
+
+    @Test
+    void shouldSendEachNumberAsItsEightBytes() throws IOException {
+        FrameWriter w = new FrameWriter().begin(MessageType.EVENTS);
+        int mark = w.position();
+        EventCodec.write(w, new DataValueEvent(1, 2L, TypedValue.of(0.1 + 0.2)));
+        EventCodec.write(w, new DataValueEvent(1, 3L, TypedValue.of(-5L)));
+        byte[] b = w.bytesSince(mark);
+        assertThat(b).hasSize(2 * (13 + 1 + 8)); // head, value type, the number
+        assertThat(b[13]).isEqualTo((byte) 3);
+        assertThat(java.nio.ByteBuffer.wrap(b, 14, 8).getLong()).isEqualTo(Double.doubleToRawLongBits(0.1 + 0.2));
+        assertThat(b[22 + 13]).isEqualTo((byte) 2);
+        assertThat(java.nio.ByteBuffer.wrap(b, 22 + 14, 8).getLong()).isEqualTo(-5L);
     }
 
     private static byte[] eventBytes(java.util.function.Consumer<FrameWriter> event) throws IOException {

@@ -14,6 +14,7 @@ import org.fdnet.event.NetworkCommandEvent;
 import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.event.RelationValueEvent;
+import org.fdnet.event.TypedValue;
 import org.fdnet.event.ValueType;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
@@ -48,7 +49,7 @@ class HistoryColumnsTest {
                 new NodeNamedEvent(5, 1L, NodeKind.DATA, new NodeRef("arm", "Joint")),
                 new DataValueEvent(5, 2L, ValueType.DOUBLE, "0.25"),
                 new DataValueEvent(5, 3L, ValueType.LONG, "-42"),
-                new DataValueEvent(5, 4L, ValueType.DOUBLE, "not a number \u00e9"),
+                new DataValueEvent(5, 4L, TypedValue.of("not a number \u00e9")),
                 new DataValueEvent(5, 5L, ValueType.DOUBLES, "0.5,1.5"),
                 new DataValueEvent(5, 6L, ValueType.BOOLEAN, "true"),
                 new RelationValueEvent(6, 7L, "RUNNING"),
@@ -66,6 +67,7 @@ class HistoryColumnsTest {
         assertThat(c.number(2)).isEqualTo(-42.0);
         assertThat(c.hasNumber(3)).isFalse();
         assertThat(c.text(3)).isEqualTo("not a number \u00e9");
+        assertThat(c.valueType(3)).isEqualTo(ValueType.STRING);
         assertThat(c.hasNumber(4)).isFalse();
         assertThat(c.hasNumber(5)).isFalse();
         assertThat(c.isDataValue(6)).isFalse();
@@ -82,24 +84,23 @@ class HistoryColumnsTest {
     }
 
     @Test
-    void shouldSendNumbersAsNumbersOnlyWhenTheirTextComesBackExactly() throws IOException {
+    void shouldCarryNumbersInBinaryExactlyAndReadThemInPlace() throws IOException {
         List<NetworkEvent> events = List.of(
-                new DataValueEvent(1, 1L, ValueType.DOUBLE, "0.25"),
-                new DataValueEvent(1, 2L, ValueType.DOUBLE, "1.50"), // not as Java prints 1.5: kept as text
-                new DataValueEvent(1, 3L, ValueType.DOUBLE, "-0.0"),
-                new DataValueEvent(1, 4L, ValueType.DOUBLE, "NaN"),
-                new DataValueEvent(1, 5L, ValueType.DOUBLE, "1.0E-7"),
-                new DataValueEvent(1, 6L, ValueType.LONG, "-9007199254740992"),
-                new DataValueEvent(1, 7L, ValueType.LONG, "9007199254740993"), // beyond a double's exact longs
-                new DataValueEvent(1, 8L, ValueType.LONG, "+5"),
-                new DataValueEvent(1, 9L, ValueType.STRING, "12"),
-                new RelationValueEvent(2, 10L, "RUNNING"));
+                new DataValueEvent(1, 1L, TypedValue.of(0.25)),
+                new DataValueEvent(1, 2L, TypedValue.of(-0.0)),
+                new DataValueEvent(1, 3L, TypedValue.of(Double.NaN)),
+                new DataValueEvent(1, 4L, TypedValue.of(1.0E-7)),
+                new DataValueEvent(1, 5L, TypedValue.of(Long.MAX_VALUE)), // beyond a double's exact longs: still exact
+                new DataValueEvent(1, 6L, TypedValue.of(0.1 + 0.2)),
+                new DataValueEvent(1, 7L, TypedValue.of("12")),
+                new DataValueEvent(1, 8L, TypedValue.ofDoubles(0.5, -1.5)),
+                new RelationValueEvent(2, 9L, "RUNNING"));
         FrameWriter w = new FrameWriter();
         w.begin(MessageType.HISTORY_CHUNK).putInt(7).putInt(events.size());
         int[] sizes = new int[events.size()];
         for (int i = 0; i < events.size(); i++) {
             int mark = w.position();
-            EventCodec.writeNumeric(w, events.get(i));
+            EventCodec.write(w, events.get(i));
             sizes[i] = w.position() - mark;
         }
         ByteArrayOutputStream out = new ByteArrayOutputStream();
@@ -110,24 +111,26 @@ class HistoryColumnsTest {
         c.appendAll(f, f.getCount(EventCodec.MIN_EVENT_BYTES));
         f.expectEnd();
 
-        assertThat(sizes).containsExactly(21, 22, 21, 21, 21, 21, 34, 20, 20, 24);
+        assertThat(sizes).containsExactly(22, 22, 22, 22, 22, 22, 20, 34, 24);
         assertThat(c.events()).isEqualTo(events);
         assertThat(c.number(0)).isEqualTo(0.25);
-        assertThat(c.number(1)).isEqualTo(1.5);
-        assertThat(Double.doubleToRawLongBits(c.number(2))).isEqualTo(Double.doubleToRawLongBits(-0.0));
-        assertThat(c.number(3)).isNaN();
-        assertThat(c.number(5)).isEqualTo(-9007199254740992.0);
-        assertThat(c.number(6)).isEqualTo(9007199254740993.0);
-        assertThat(c.number(7)).isEqualTo(5.0);
-        assertThat(c.hasNumber(8)).isFalse();
-        assertThat(c.valueType(5)).isEqualTo(ValueType.LONG);
-        assertThat(c.text(4)).isEqualTo("1.0E-7");
+        assertThat(Double.doubleToRawLongBits(c.number(1))).isEqualTo(Double.doubleToRawLongBits(-0.0));
+        assertThat(c.number(2)).isNaN();
+        assertThat(c.text(3)).isEqualTo("1.0E-7");
+        assertThat(c.text(4)).isEqualTo(Long.toString(Long.MAX_VALUE));
+        assertThat(c.number(5)).isEqualTo(0.1 + 0.2);
+        assertThat(c.hasNumber(6)).isFalse();
+        assertThat(c.text(6)).isEqualTo("12");
+        assertThat(c.hasNumber(7)).isFalse();
+        assertThat(c.valueType(7)).isEqualTo(ValueType.DOUBLES);
+        assertThat(c.text(8)).isEqualTo("RUNNING");
+        assertThat(c.valueType(4)).isEqualTo(ValueType.LONG);
     }
 
     @Test
     void shouldRejectAnUnknownValueTypeNamingTheFrame() throws IOException {
         FrameWriter w = new FrameWriter();
-        w.begin(MessageType.HISTORY_CHUNK).putInt(1).putInt(1).putEventHead(1, 3, 10L).putByte(99).putString("1");
+        w.begin(MessageType.HISTORY_CHUNK).putInt(1).putInt(1).putEventHead(1, 3, 10L).putByte(99).putLong(1);
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         w.writeTo(out);
         Frame f = new FrameReader(new ByteArrayInputStream(out.toByteArray()), Protocol.DEFAULT_MAX_FRAME_BYTES).read();

@@ -5,6 +5,9 @@ import java.util.Locale;
 import java.util.concurrent.atomic.AtomicLong;
 import org.HdrHistogram.Histogram;
 import org.fdnet.event.EventSink;
+import org.fdnet.event.client.ClientStatus;
+import org.fdnet.event.client.LoggerClient;
+import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.Controller;
 import org.fdnet.runtime.Value;
@@ -27,10 +30,18 @@ public final class CoreBenchmark {
         final AtomicLong count = new AtomicLong();
     }
 
+    /** {@code HOST:PORT} of a running logger to send the hop's events to, or {@code null}. */
+    private final String logger;
+
     public CoreBenchmark(PrintWriter out, int hops, int warmup) {
+        this(out, hops, warmup, null);
+    }
+
+    public CoreBenchmark(PrintWriter out, int hops, int warmup, String logger) {
         this.out = out;
         this.hops = hops;
         this.warmup = warmup;
+        this.logger = logger;
     }
 
     public record Result(double hopP50Micros, double chainFiringsPerSecond) {
@@ -53,6 +64,9 @@ public final class CoreBenchmark {
         print(row, "FDNet, run on the writer's thread", inline);
         print(row, "FDNet, run on the writer's thread + events", events);
         print(row, "FDNet, handed to the worker pool", pooled);
+        if (logger != null) {
+            loggerHop(row);
+        }
         out.println();
 
         out.println("2. throughput of a chain of 10 Relations, one writer thread (firings per second)");
@@ -112,6 +126,32 @@ public final class CoreBenchmark {
             }
         }
         return h;
+    }
+
+    /**
+     * The hop with a real logger client attached (two events per hop go to the logger at {@link #logger}), beside
+     * the same hop with no sink in the same run: the core's cost per event with a logger. Fewer hops than the
+     * others, and room in the client's memory for all their events, so that no event goes to its disk journal
+     * (the figure is the core's, not the disk's); then every event is waited for until the logger committed it.
+     */
+    private void loggerHop(String row) throws Exception {
+        int samples = Math.min(hops, 100_000);
+        int warm = Math.min(warmup, 100_000);
+        LoggerClientSettings settings = LoggerClientSettings.parseAddress(logger, "bench-core")
+                .withMemoryEvents(4 * (samples + warm) + 1000);
+        Histogram none = hop(RuntimeOptions.defaults().workerThreads(1), samples, warm);
+        Histogram attached;
+        ClientStatus status;
+        try (LoggerClient client = new LoggerClient(settings)) {
+            attached = hop(RuntimeOptions.defaults().workerThreads(1).sink(client), samples, warm);
+            client.flush(600_000);
+            status = client.status();
+        }
+        print(row, "FDNet, run on the writer's thread (again)", none);
+        print(row, "FDNet, + events to the logger at " + logger, attached);
+        out.printf(Locale.ROOT, "   %-44s %+8.3f us per hop (2 events) at p50; logger: %,d accepted, %,d committed, %,d lost%n",
+                "cost of the logger client", (attached.getValueAtPercentile(50) - none.getValueAtPercentile(50)) / 1000.0,
+                status.accepted(), status.acked(), status.lost());
     }
 
     private Histogram baselineHop() {

@@ -18,12 +18,16 @@ public final class BenchCoreCommand implements Callable<Integer> {
     @Option(names = "--warmup", defaultValue = "200000", description = "warm-up hops (default: ${DEFAULT-VALUE})")
     int warmup;
 
+    @Option(names = "--logger", paramLabel = "HOST:PORT",
+            description = "also run the hop with a logger client attached, sending its events to this running logger")
+    String logger;
+
     @Spec
     CommandSpec spec;
 
     @Override
     public Integer call() throws Exception {
-        new CoreBenchmark(spec.commandLine().getOut(), hops, warmup).run();
+        new CoreBenchmark(spec.commandLine().getOut(), hops, warmup, logger).run();
         return 0;
     }
 }

@@ -21,6 +21,7 @@ import org.fdnet.logger.config.LoggerConfig;
 import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.logger.store.DatabaseTarget;
 import org.fdnet.logger.store.EmbeddedDatabase;
+import org.fdnet.logger.store.QueryPriority;
 import org.fdnet.logger.store.SourceDirectory;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -214,6 +215,9 @@ public final class BenchLoggerCommand implements Callable<Integer> {
         report.info("[2] keyed-COPY limit with 2 connections at once (disjoint nodes, 100,000-row batches)",
                 String.format("%,.0f rows/s (%.2f x one connection; the logger writes through %d)", two, two / keyed,
                         s.connections));
+        double limit = s.connections > 1 ? two : keyed;
+        report.check("[2] ratio logger / keyed-COPY limit on the same " + s.connections + " connection(s) (issue #21)",
+                String.format("%.2f (%,.0f of %,.0f rows/s)", s.rate / limit, s.rate, limit), ">= 0.75", s.rate / limit >= 0.75);
     }
 
     /** Phase 3: a moderate rate; for each event, from its time stamp in the core to the commit of its batch. */
@@ -265,7 +269,7 @@ public final class BenchLoggerCommand implements Callable<Integer> {
             }
             LongSupplier now = BenchLoggerCommand::nowMicros;
             inProcessQueries("while the writer drains", cache, directory, node, now, 1.0);
-            tcpQueries("while the writer drains", viewer, cache, node, now, 2.0);
+            tcpQueries("while the writer drains", viewer, cache, node, now, 2.0, logger.queries());
             long inNanos = 0;
             while (producer.isAlive()) {
                 if (inNanos == 0 && cache.received() - receivedBefore >= burst) {
@@ -287,7 +291,7 @@ public final class BenchLoggerCommand implements Callable<Integer> {
             long newest = held.isEmpty() ? nowMicros() : held.get(held.size() - 1).time();
             LongSupplier end = () -> newest; // idle: the last 10 s of the node's data, now over
             inProcessQueries("writer idle", cache, directory, node, end, 1.0);
-            tcpQueries("writer idle", viewer, cache, node, end, 1.0);
+            tcpQueries("writer idle", viewer, cache, node, end, 1.0, null);
             cache.unsubscribe(plot, new int[] {node}, held);
         }
     }
@@ -312,22 +316,44 @@ public final class BenchLoggerCommand implements Callable<Integer> {
         queryFigure("in-process", when, h, found, unwrittenBefore, cache.unwrittenCount(), gcMillis() - gcBefore, targetMs, slow);
     }
 
-    private void tcpQueries(String when, ViewerClient viewer, EventCache cache, int node, LongSupplier end, double targetMs)
-            throws Exception {
+    /**
+     * 1,000 queries over TCP. With {@code priority}, the baseline is measured in the same phase: blocks of 50
+     * queries alternate between the logger's setting ({@code sender.queryPauseMillis}) and no pause at all, so both
+     * see the same load; the target is checked on the setting's queries.
+     */
+    private void tcpQueries(String when, ViewerClient viewer, EventCache cache, int node, LongSupplier end, double targetMs,
+                            QueryPriority priority) throws Exception {
         Histogram h = new Histogram(3);
+        Histogram unpaused = new Histogram(3);
+        long pauseMillis = Long.parseLong(LoggerSetting.SENDER_QUERY_PAUSE.defaultValue());
         long gcBefore = gcMillis();
         long unwrittenBefore = cache.unwrittenCount();
         int found = 0;
         Thread.currentThread().setPriority(Thread.MAX_PRIORITY); // a viewer's waiting thread, like its reader
         SlowQueries slow = new SlowQueries(targetMs);
-        for (int i = 0; i < 1000; i++) {
+        for (int i = 0; i < (priority == null ? 1000 : 2000); i++) {
+            boolean baseline = priority != null && (i / 50) % 2 == 1;
+            if (priority != null && i % 50 == 0) {
+                priority.maxPauseMillis(baseline ? 0 : pauseMillis);
+            }
             long to = end.getAsLong();
             long g0 = gcCount();
             long q0 = System.nanoTime();
             found = viewer.historyColumns(new int[] {node}, to - TEN_SECONDS_US, to).size(); // a viewer's plot path
             long micros = (System.nanoTime() - q0) / 1000;
+            if (baseline) {
+                unpaused.recordValue(micros);
+                continue;
+            }
             h.recordValue(micros);
             slow.add(micros, gcCount() != g0);
+        }
+        if (priority != null) {
+            priority.maxPauseMillis(pauseMillis);
+            report.info("[4] baseline: the same query over TCP, " + when + ", writer and receivers not pausing"
+                            + " (sender.queryPauseMillis 0; blocks of 50 alternating with the setting's)",
+                    String.format("p50 / p99 / max %.2f / %.2f / %.1f ms", unpaused.getValueAtPercentile(50) / 1000.0,
+                            unpaused.getValueAtPercentile(99) / 1000.0, unpaused.getMaxValue() / 1000.0));
         }
         Thread.currentThread().setPriority(Thread.NORM_PRIORITY);
         queryFigure("ViewerClient over TCP", when, h, found, unwrittenBefore, cache.unwrittenCount(), gcMillis() - gcBefore,

@@ -11,7 +11,7 @@ import java.time.Duration;
 import org.fdnet.event.DataValueEvent;
 import org.fdnet.event.EventClock;
 import org.fdnet.event.NodeNamedEvent;
-import org.fdnet.event.ValueType;
+import org.fdnet.event.TypedValue;
 import org.fdnet.event.client.ClientStatus;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
@@ -79,7 +79,7 @@ public final class BenchProducer {
                 }
                 for (long i = sent; i < due && sent < events; i++) {
                     int node = (int) (sent % nodes);
-                    client.accept(new DataValueEvent(node, clock.next(), ValueType.DOUBLE, Double.toString(sent * 0.001)));
+                    client.accept(new DataValueEvent(node, clock.next(), TypedValue.of(sent * 0.001)));
                     sent++;
                 }
             }

@@ -14,7 +14,7 @@ import org.HdrHistogram.Recorder;
 import org.fdnet.logger.InProcessLogger;
 import org.fdnet.event.DataValueEvent;
 import org.fdnet.event.NodeNamedEvent;
-import org.fdnet.event.ValueType;
+import org.fdnet.event.TypedValue;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.netinfo.NodeKind;
@@ -164,7 +164,7 @@ public final class BenchViewerCommand implements Callable<Integer> {
             String v = "";
             for (int i = 0; i < series; i++) {
                 double value = Math.sin(tick * 0.002 * Math.PI + i * 0.3) * (1 + i % 5) + i % 7 * 0.1;
-                writer.accept(new DataValueEvent(i, time, ValueType.DOUBLE, Double.toString(value)));
+                writer.accept(new DataValueEvent(i, time, TypedValue.of(value)));
             }
             written.addAndGet(series);
             tick++;

@@ -31,7 +31,7 @@ import org.fdnet.runtime.Value;
  * </ul>
  * The way RoQ falls is the direction the top of the body moves, seen from above: (pitch rate, −roll rate) from the
  * gyro while a rate triggers, else (pitch, −roll) from the inclinometer (pitch > 0: nose down; roll > 0: left side
- * up). Sensed values only. After the hold, the shift and crouch fade out over {@code release} s (default 0: at once)
+ * up), read when the brace begins and kept while it holds. Sensed values only. After the hold, the shift and crouch fade out over {@code release} s (default 0: at once)
  * so the body does not lurch back. The correction is written only when it changes; "caught leg L at t s" is
  * reported on each trigger, after the correction is on its way.
  */
@@ -106,7 +106,8 @@ public class TiltReflex extends Relation {
         double now = c.seconds();
         int swinging = phase.element(1) > 0.5 ? (int) phase.element(0) : -1;
         boolean caughtNow = false;
-        if (tipping(c.input(ATTITUDE), c.inputCount() > GYRO ? c.input(GYRO) : null)) {
+        boolean bracing = now <= holdUntil;
+        if (tipping(c.input(ATTITUDE), c.inputCount() > GYRO ? c.input(GYRO) : null, !bracing)) {
             caughtNow = swinging >= 0 && caughtLeg != swinging;
             caughtLeg = swinging >= 0 ? swinging : caughtLeg;
             holdUntil = now + hold;
@@ -123,12 +124,19 @@ public class TiltReflex extends Relation {
         }
     }
 
-    /** Whether RoQ tips; when it does, the way it falls goes to {@link #fallX}, {@link #fallY}. */
-    private boolean tipping(Value attitude, Value gyro) {
+    /**
+     * Whether RoQ tips; when it does and {@code aim}, the way it falls goes to {@link #fallX}, {@link #fallY}. The way
+     * is taken once, when a brace begins: the brace's own move turns the body, and a way read again from that turn
+     * flips the brace back and forth (measured: the stance feet swung ±8 cm every 0.1 s for 2 s).
+     */
+    private boolean tipping(Value attitude, Value gyro, boolean aim) {
         boolean tilted = attitude != null && attitude.length() >= 2
                 && (Math.abs(attitude.element(0)) > tilt || Math.abs(attitude.element(1)) > tilt);
         boolean turning = gyro != null && gyro.length() >= 2
                 && (Math.abs(gyro.element(0)) > rate || Math.abs(gyro.element(1)) > rate);
+        if (!aim) {
+            return tilted || turning;
+        }
         if (turning) {
             fallTowards(gyro.element(1), -gyro.element(0));
         } else if (tilted) {

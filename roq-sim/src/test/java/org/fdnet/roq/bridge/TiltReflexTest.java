@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
@@ -39,6 +40,39 @@ class TiltReflexTest {
         double without = ticksUntilHindRightTouches(false);
         assertThat(withReflex).as("ticks from the push to the hind-right foot's touchdown, with the reflex")
                 .isLessThan(without * 0.8);
+    }
+
+    @Test
+    void shouldMoveTheBodyAgainstThePushWhileItHoldsAndLetGoAfter() throws Exception {
+        Course pushed = Course.flat().withStimuli(List.of(TIP_TOWARDS_HIND_RIGHT));
+        try (RoqSimulator sim = RoqSimulator.open(pushed, SimMode.STEPPED);
+             RuntimeNetwork net = RuntimeNetwork.start(NetworkRepository.load(NETWORK),
+                     RuntimeOptions.defaults().drivenClock(new DrivenClock(0)))) {
+            SimBridge bridge = SimBridge.stepped(net, sim, 0, 1);
+            NodeRef press = NodeRef.parse("reflex press", "Reflex");
+            bridge.run((int) TIP_TOWARDS_HIND_RIGHT.firstTick());
+            double backRight = 0;
+            double lowered = 0;
+            for (int t = 0; t < 300; t++) {
+                bridge.run(1);
+                double[] c = net.controller().value(press).asDoubles();
+                int frontLeft = 0;
+                // a stance foot moves the way RoQ falls (back and right): the body moves against it
+                backRight = Math.max(backRight, -c[3 * frontLeft] - c[3 * frontLeft + 1]);
+                lowered = Math.min(lowered, c[3 * HIND_RIGHT + 2] - c[3 * frontLeft + 2]);
+            }
+            assertThat(backRight).as("largest back-and-right move of the front-left foot while RoQ tips, m")
+                    .isGreaterThan(0.05);
+            assertThat(lowered).as("hind-right foot lowered below the stance feet, m").isLessThan(-0.01);
+            int letGo = -1;
+            for (int t = 0; t < 1500 && letGo < 0; t++) {
+                bridge.run(1);
+                if (Arrays.stream(net.controller().value(press).asDoubles()).allMatch(v -> v == 0)) {
+                    letGo = t;
+                }
+            }
+            assertThat(letGo).as("ms after the first 0.3 s until the correction is zero again").isBetween(0, 1499);
+        }
     }
 
     @Test

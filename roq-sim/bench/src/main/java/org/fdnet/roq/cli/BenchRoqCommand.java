@@ -57,6 +57,10 @@ public final class BenchRoqCommand implements Callable<Integer> {
             description = "(push) push start, s after a leg lifts (default 0,0.35; the swing lasts 0.7 s)")
     double[] offsets;
 
+    @Option(names = "--drops", defaultValue = "100",
+            description = "(b) sole-force drops, one short run each (default 100, about 2 s each)")
+    int drops;
+
     @Option(names = "--no-logger", description = "(b) without recording (default: record with a logger started here)")
     boolean noLogger;
 
@@ -85,6 +89,10 @@ public final class BenchRoqCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         if (seconds < 1) {
             System.err.println("fdnet bench roq: --seconds must be at least 1, was " + seconds);
+            return 2;
+        }
+        if (drops < 1) {
+            System.err.println("fdnet bench roq: --drops must be at least 1, was " + drops);
             return 2;
         }
         if (!part.matches("a|b|ab|push|heading")) {
@@ -123,7 +131,7 @@ public final class BenchRoqCommand implements Callable<Integer> {
             }
             if (part.contains("b")) {
                 return new ReflexLatencyBench(CourseLoader.resolve(reflexCourse), load(reflexNetwork), reflexNetwork,
-                        seconds, !noLogger).run();
+                        seconds, drops, !noLogger).run();
             }
             return 0;
         } catch (CourseFormatException | NetworkFileException e) {

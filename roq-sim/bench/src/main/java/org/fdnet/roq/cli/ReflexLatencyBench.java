@@ -36,13 +36,15 @@ final class ReflexLatencyBench {
     private final NetworkInfo definition;
     private final Path network;
     private final int seconds;
+    private final int drops;
     private final boolean record;
 
-    ReflexLatencyBench(Course course, NetworkInfo definition, Path network, int seconds, boolean record) {
+    ReflexLatencyBench(Course course, NetworkInfo definition, Path network, int seconds, int drops, boolean record) {
         this.course = course;
         this.definition = definition;
         this.network = network;
         this.seconds = seconds;
+        this.drops = drops;
         this.record = record;
     }
 
@@ -51,7 +53,7 @@ final class ReflexLatencyBench {
                 + " each, course %s, network %s; pushes of %.0f N for %.1f s towards the swinging leg's corner; %d"
                 + " sole-force drops (the cell under the front-left foot breaks while hind-right swings)%n",
                 seconds, course.name(), network, StimulusLatencyRun.PUSH_NEWTONS, StimulusLatencyRun.PUSH_SECONDS,
-                StimulusLatencyRun.CELL_BREAK_RUNS);
+                drops);
         LatencySample echo = echoAlone();
         System.out.printf(Locale.ROOT, "baseline: bare Java echo, every snapshot: %s commands%n", echo.summary());
         InProcessLogger logger = null;
@@ -68,8 +70,8 @@ final class ReflexLatencyBench {
             LoggerClient client = logger == null ? null
                     : new LoggerClient(LoggerClientSettings.parseAddress("127.0.0.1:" + logger.receiverPort(),
                             "fdnet bench roq " + definition.name()));
-            StimulusLatencyRun reflexRun = new StimulusLatencyRun(course, definition, true, seconds, client);
-            StimulusLatencyRun periodicRun = new StimulusLatencyRun(course, definition, false, seconds, client);
+            StimulusLatencyRun reflexRun = new StimulusLatencyRun(course, definition, true, seconds, drops, client);
+            StimulusLatencyRun periodicRun = new StimulusLatencyRun(course, definition, false, seconds, drops, client);
             StimulusLatencyRun.Outcome reflex = reflexRun.run(StimulusLatencyRun.Kind.PUSH);
             print("tilt reflex, pushes, " + reflexRun.describe(), reflex);
             StimulusLatencyRun.Outcome reflexDrops = reflexRun.run(StimulusLatencyRun.Kind.CELL_BREAK);

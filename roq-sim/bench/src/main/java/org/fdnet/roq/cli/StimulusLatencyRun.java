@@ -53,7 +53,7 @@ final class StimulusLatencyRun {
         /** Pushes on the body during leg swings, one run of the given length. */
         PUSH,
         /**
-         * Sole-force drops: short runs on {@link #cellsUnderTheFeet}, each breaking the cell under the front-left
+         * Sole-force drops: short runs on {@link #cellsUnderTheFeet} (as many as the run's {@code drops}), each breaking the cell under the front-left
          * foot while the hind-right leg (its diagonal partner) is in the air.
          */
         CELL_BREAK
@@ -63,6 +63,7 @@ final class StimulusLatencyRun {
     private final NetworkInfo definition;
     private final boolean reflexLoaded;
     private final int seconds;
+    private final int drops;
     private final LoggerClient client;
     private final double tilt;
     private final double rate;
@@ -73,11 +74,13 @@ final class StimulusLatencyRun {
     private final long[] sourceTicks = new long[64];
     private long seen;
 
-    StimulusLatencyRun(Course course, NetworkInfo definition, boolean reflexLoaded, int seconds, LoggerClient client) {
+    StimulusLatencyRun(Course course, NetworkInfo definition, boolean reflexLoaded, int seconds, int drops,
+                       LoggerClient client) {
         this.course = course;
         this.definition = definition;
         this.reflexLoaded = reflexLoaded;
         this.seconds = seconds;
+        this.drops = drops;
         this.client = client;
         NodeRef reflex = SimBridge.nodesOf(definition, TiltReflex.class).stream().findFirst().orElseThrow(() ->
                 new IllegalArgumentException("network " + definition.name() + " has no " + TiltReflex.class.getName()
@@ -94,16 +97,13 @@ final class StimulusLatencyRun {
         }
         Outcome sum = new Outcome(0, 0, new LatencySample(), false);
         Course cells = cellsUnderTheFeet(course);
-        for (int i = 0; i < CELL_BREAK_RUNS; i++) {
+        for (int i = 0; i < drops; i++) {
             Outcome o = run(cells, Kind.CELL_BREAK, 4);
             o.latencies().addAllTo(sum.latencies());
             sum = new Outcome(sum.stimuli() + o.stimuli(), sum.shown() + o.shown(), sum.latencies(), sum.fell() || o.fell());
         }
         return sum;
     }
-
-    /** Sole-force-drop runs per measurement. */
-    static final int CELL_BREAK_RUNS = 8;
 
     /** {@code c} with a strong fragile cell (1000 N, 8 cm deep: a drop that tips RoQ) under each standing foot, front-left's first. */
     static Course cellsUnderTheFeet(Course c) {

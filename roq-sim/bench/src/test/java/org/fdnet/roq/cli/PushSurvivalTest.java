@@ -10,12 +10,12 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
 /**
- * Pins what {@code bench roq --part push} measures (docs/roq-networks.md, "Disturbance"), one push on each side of
- * the measured limits, with margin: roq-reflex-bench on the flat course, noise seed 7, a 0.2 s push during the first
- * leg lift after 5.5 s, with the full network and with Balance and Reflex unloaded. The network helps against a
- * diagonal push mid-swing (45°, 0.2 s into the swing: largest survived 1025 N with it, 263 N without — a point off
- * the bench's default table) and hinders against a sideways one late in the swing (270°, 0.35 s: 478 N with it,
- * 1344 N without): the two findings, both pinned, so a change to Balance or the reflex that moves either shows.
+ * Pins what {@code bench roq --part push} measures (docs/roq-networks.md, "Disturbance"), one push between the
+ * measured limits with and without the network, with margin on both sides: roq-reflex-bench on the flat course,
+ * noise seed 7, a 0.2 s push during the first leg lift after 5.5 s, with the full network and with Balance and Reflex
+ * unloaded. Two of the three points lie off the bench's table (22.5° steps, 0.2 s into the swing), which the
+ * reflex's brace was not tuned on. Each push is survived with the network and tips RoQ over without it; a change to
+ * Balance or the reflex that loses the gain shows here.
  */
 class PushSurvivalTest {
     private static final Path NETWORK = Path.of("..", "..", "networks", "roq-reflex-bench.fdn");
@@ -30,20 +30,29 @@ class PushSurvivalTest {
     }
 
     @Test
-    void shouldSurviveADiagonalPushMidSwingWithBalanceAndReflexThatTipsRoqOverWithoutThem() throws Exception {
-        // 600 N: 0.59 × the 1025 N measured with the network, 2.3 × the 263 N without
-        PushTrial.Outcome with = full.run(600, 45, 0.2);
-        PushTrial.Outcome without = bare.run(600, 45, 0.2);
-        assertThat(with.survived()).as("full network, 600 N at 45°: " + with).isTrue();
-        assertThat(without.survived()).as("Balance and Reflex unloaded, 600 N at 45°: " + without).isFalse();
+    void shouldSurviveAForwardPushAtLiftOffThatTipsRoqOverWithoutBalanceAndReflex() throws Exception {
+        // on the table: 0°, 0 s; 290 N is 0.78 × the 372 N survived with the network, 1.5 × the 191 N without
+        assertSurvivedOnlyWithTheNetwork(290, 0, 0);
     }
 
     @Test
-    void shouldSurviveASidewaysPushLateInTheSwingBetterWithoutBalanceAndReflexAsMeasured() throws Exception {
-        // 850 N: 1.8 × the 478 N measured with the network, 0.63 × the 1344 N without
-        PushTrial.Outcome with = full.run(850, 270, 0.35);
-        PushTrial.Outcome without = bare.run(850, 270, 0.35);
-        assertThat(with.survived()).as("full network, 850 N at 270°: " + with).isFalse();
-        assertThat(without.survived()).as("Balance and Reflex unloaded, 850 N at 270°: " + without).isTrue();
+    void shouldSurviveAForwardLeftPushMidSwingThatTipsRoqOverWithoutThem() throws Exception {
+        // off the table: 22.5°, 0.2 s; 380 N is 0.56 × the 678 N survived with the network, 2.0 × the 188 N without
+        assertSurvivedOnlyWithTheNetwork(380, 22.5, 0.2);
+    }
+
+    @Test
+    void shouldSurviveAForwardRightPushMidSwingThatTipsRoqOverWithoutThem() throws Exception {
+        // off the table: 337.5°, 0.2 s; 400 N is 0.44 × the 913 N survived with the network, 2.1 × the 191 N without
+        assertSurvivedOnlyWithTheNetwork(400, 337.5, 0.2);
+    }
+
+    private static void assertSurvivedOnlyWithTheNetwork(double force, double direction, double offset)
+            throws Exception {
+        PushTrial.Outcome with = full.run(force, direction, offset);
+        PushTrial.Outcome without = bare.run(force, direction, offset);
+        String push = force + " N at " + direction + "°, " + offset + " s into the swing: ";
+        assertThat(with.survived()).as("full network, " + push + with).isTrue();
+        assertThat(without.survived()).as("Balance and Reflex unloaded, " + push + without).isFalse();
     }
 }

@@ -14,7 +14,11 @@ import org.fdnet.runtime.Value;
  * line ahead of where it started) from what it senses, and steers the crawl back onto that line.
  *
  * <p>The heading comes from the IMU's gyro (a Data named {@code imu gyro}, body-frame rates, rad/s), turned into the
- * heading's rate by the inclinometer's {@code attitude}. Its bias is learnt slowly (20 s) from leg odometry: the feet
+ * heading's rate by the inclinometer's {@code attitude}. Its bias is measured or learnt one of two ways. With
+ * {@code calibrate} (s, default 0: off) it is the gyro's mean rate while RoQ stands still for that long at the start
+ * (the second half of it; the gait's {@code settle} must be as long), the way {@code roq-rubble.fdn} runs: the feet's
+ * turn slips too much to teach it over a long crawl (measured in roq-networks.md). With {@code biasTime} (s, default
+ * 20; 0: off) it is learnt slowly from leg odometry: the feet
  * that bear load (sole force over {@code contact} N, default 20, and not the leg the {@code gait phase} has in the
  * air) stay where they are on the ground, so the way their positions (forward kinematics of the measured joint
  * angles, levelled by the attitude, {@link SensedFeet}) turned in the body frame between two firings is the body's

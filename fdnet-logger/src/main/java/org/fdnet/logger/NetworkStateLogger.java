@@ -75,7 +75,7 @@ public final class NetworkStateLogger implements AutoCloseable {
                 target = new DatabaseTarget(config.jdbcUrl(), config.databaseUser(), config.databasePassword());
             }
             queries = new QueryPriority(config.queryPauseMillis());
-            store = new EventStore(target, queries);
+            store = new EventStore(target, queries, config.backendNiceness());
             store.createSchema();
             directory = new SourceDirectory(store);
             directory.load();

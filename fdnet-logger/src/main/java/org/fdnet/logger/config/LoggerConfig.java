@@ -84,6 +84,7 @@ public final class LoggerConfig {
             case WRITER_MAX_BATCH_ROWS -> range(s, v, 1, 10_000_000);
             case WRITER_MAX_BATCH_BYTES -> range(s, v, 1, 4096);
             case WRITER_CONNECTIONS -> range(s, v, 1, 8);
+            case WRITER_BACKEND_NICENESS -> range(s, v, 0, 19);
             case WRITER_RECONNECT_ATTEMPTS -> range(s, v, 1, 1_000_000);
             case WRITER_RECONNECT_DELAY -> range(s, v, 0, 3_600_000);
             case RECEIVER_MAX_CLIENTS, SENDER_MAX_CLIENTS -> range(s, v, 1, 10_000);
@@ -224,6 +225,11 @@ public final class LoggerConfig {
     }
 
     /** How long one pause of the writer or a receiver for a viewer's query lasts at most ({@code QueryPriority}). */
+    /** The nice value the writer's PostgreSQL backends are given when the database is local (0: untouched). */
+    public int backendNiceness() {
+        return (int) number(LoggerSetting.WRITER_BACKEND_NICENESS);
+    }
+
     public long queryPauseMillis() {
         return number(LoggerSetting.SENDER_QUERY_PAUSE);
     }

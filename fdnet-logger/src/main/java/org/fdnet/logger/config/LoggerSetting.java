@@ -23,6 +23,9 @@ public enum LoggerSetting {
     WRITER_MAX_BATCH_BYTES("writer.maxBatchMegabytes", Panel.WRITER, "64", "... and up to this many cached MB"),
     WRITER_CONNECTIONS("writer.connections", Panel.WRITER, "2",
             "under backlog, COPY the next batch on another connection while one commits (1: one batch at a time)"),
+    WRITER_BACKEND_NICENESS("writer.backendNiceness", Panel.WRITER, "10",
+            "the nice value of the writer's PostgreSQL backends when the database runs on this host, so viewers' queries"
+            + " and the network go first (0: leave them)"),
     WRITER_RECONNECT("writer.reconnect", Panel.WRITER, "true", "reconnect to a lost database"),
     WRITER_RECONNECT_ATTEMPTS("writer.reconnectAttempts", Panel.WRITER, "5", "attempts before reporting the database down"),
     WRITER_RECONNECT_DELAY("writer.reconnectDelayMillis", Panel.WRITER, "5000", "delay between attempts"),
@@ -35,13 +38,13 @@ public enum LoggerSetting {
     SENDER_ADDRESS("sender.address", Panel.SENDER, "127.0.0.1", "address the viewer server binds"),
     SENDER_PORT("sender.port", Panel.SENDER, "5556", "port for viewers"),
     SENDER_MAX_CLIENTS("sender.maxClients", Panel.SENDER, "100", "viewers served at once"),
-    SENDER_QUERY_PAUSE("sender.queryPauseMillis", Panel.SENDER, "20",
+    SENDER_QUERY_PAUSE("sender.queryPauseMillis", Panel.SENDER, "0",
             "while a viewer's query is answered, the writer's COPY and the receivers pause up to this long (0: never)"),
 
     MEMORY_NETWORK_EVENT_BYTES("memory.networkEventBytes", Panel.MEMORY, "167", "bytes counted per state event (+ value)"),
     MEMORY_COMMAND_EVENT_BYTES("memory.commandEventBytes", Panel.MEMORY, "223", "bytes counted per command event"),
     MEMORY_CAPACITY_MB("memory.cacheCapacityMegabytes", Panel.MEMORY, "512", "cache capacity"),
-    PRIORITY_ENABLED("priority.enabled", Panel.MEMORY, "true", "raise the writer's priority at the critical level"),
+    PRIORITY_ENABLED("priority.enabled", Panel.MEMORY, "true", "raise the writer's priority at the critical level; answer viewers from real-time threads (where permitted)"),
     PRIORITY_CRITICAL("priority.criticalPercent", Panel.MEMORY, "80", "critical level, % of capacity"),
     PRIORITY_NORMAL("priority.normalPercent", Panel.MEMORY, "50", "normal level, % of capacity");
 

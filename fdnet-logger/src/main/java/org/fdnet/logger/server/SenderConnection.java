@@ -5,6 +5,7 @@ import java.net.Socket;
 import java.sql.SQLException;
 import java.util.List;
 import org.fdnet.event.NetworkEvent;
+import org.fdnet.event.client.ResponsiveThreads;
 import org.fdnet.event.wire.ErrorCode;
 import org.fdnet.event.wire.EventCodec;
 import org.fdnet.event.wire.Frame;
@@ -29,11 +30,14 @@ final class SenderConnection extends Connection {
     private static final Logger LOG = LoggerFactory.getLogger(SenderConnection.class);
 
     private final ViewerService viewers;
+    private final boolean realTime;
     private MonitorStream monitor;
 
-    SenderConnection(Socket socket, int maxFrameBytes, ViewerService viewers) {
+    /** @param realTime whether to answer from a real-time thread ({@link ResponsiveThreads}; {@code priority.enabled}) */
+    SenderConnection(Socket socket, int maxFrameBytes, ViewerService viewers, boolean realTime) {
         super(socket, maxFrameBytes);
         this.viewers = viewers;
+        this.realTime = realTime;
     }
 
     @Override
@@ -52,6 +56,9 @@ final class SenderConnection extends Connection {
 
     @Override
     protected void serve(FrameReader in) throws IOException {
+        if (realTime) {
+            ResponsiveThreads.raiseCurrent("the logger's sender thread for " + describe());
+        }
         Frame f;
         while ((f = in.read()) != null) {
             frames++;

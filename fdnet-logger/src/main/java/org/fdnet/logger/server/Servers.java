@@ -23,7 +23,7 @@ public final class Servers {
     public static TcpServer sender(LoggerConfig config, ViewerService viewers) throws IOException {
         int maxFrame = config.maxFrameBytes();
         return new TcpServer("sender", config.senderAddress(), config.senderPort(),
-                new ConnectionFactory("sender", config.senderMaxClients(), s -> new SenderConnection(s, maxFrame, viewers),
+                new ConnectionFactory("sender", config.senderMaxClients(), s -> new SenderConnection(s, maxFrame, viewers, config.priorityEnabled()),
                         config.priorityEnabled() ? Thread.MAX_PRIORITY : Thread.NORM_PRIORITY));
     }
 }

@@ -61,16 +61,22 @@ public final class EventStore implements AutoCloseable {
      */
     static final int COPY_CHUNK_ROWS = 1024;
     private final QueryPriority queries;
+    private final BackendNiceness writerBackends;
 
     public EventStore(DatabaseTarget target) {
-        this(target, new QueryPriority(0)); // no viewers: never pauses
+        this(target, new QueryPriority(0), 0); // no viewers: never pauses, backends untouched
     }
 
-    /** A store whose writers pause between COPY chunks while {@code queries} says a viewer's query is answered. */
-    public EventStore(DatabaseTarget target, QueryPriority queries) {
+    /**
+     * A store whose writers pause between COPY chunks while {@code queries} says a viewer's query is answered, and
+     * whose writer backends run at {@code writerBackendNiceness} when the database is on this host
+     * ({@link BackendNiceness}; 0 leaves them alone).
+     */
+    public EventStore(DatabaseTarget target, QueryPriority queries, int writerBackendNiceness) {
         this.target = target;
         this.pool = new ConnectionPool(target, 8);
         this.queries = queries;
+        this.writerBackends = new BackendNiceness(writerBackendNiceness);
     }
 
     public DatabaseTarget target() {
@@ -85,7 +91,7 @@ public final class EventStore implements AutoCloseable {
     }
 
     /**
-     * A connection for the writer (auto-commit off), with a lock timeout: two writer transactions in flight
+     * A connection for the writer (auto-commit off), its backend at the writer's nice value, with a lock timeout: two writer transactions in flight
      * could otherwise wait for each other where PostgreSQL cannot see it (the later one waits for the earlier
      * one's commit in the client); a lock wait beyond {@link #WRITER_LOCK_TIMEOUT_MILLIS} fails the statement.
      */
@@ -97,6 +103,7 @@ public final class EventStore implements AutoCloseable {
             c.close();
             throw e;
         }
+        writerBackends.apply(c);
         c.setAutoCommit(false);
         return c;
     }

@@ -160,6 +160,7 @@ public final class ViewerClient implements AutoCloseable {
     }
 
     private void readLoop(FrameReader in) {
+        ResponsiveThreads.raiseCurrent("a viewer's reader thread");
         try {
             Frame f;
             while ((f = in.read()) != null) {

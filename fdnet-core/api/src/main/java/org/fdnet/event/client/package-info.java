@@ -10,5 +10,7 @@
  *   viewer ─ViewerClient─▶ logger sender: LIST_NODES, HISTORY, MONITOR/UNMONITOR
  *   logger sender ─frames─▶ ViewerClient's reader ─LoggerAnswers─▶ open requests' answers, monitor listener
  * </pre>
+ * The threads a waiting viewer depends on (the logger's sender thread, the viewer's reader) make themselves
+ * real-time where permitted ({@link org.fdnet.event.client.ResponsiveThreads}).
  */
 package org.fdnet.event.client;

@@ -46,6 +46,8 @@ import picocli.CommandLine.Option;
 public final class BenchLoggerCommand implements Callable<Integer> {
     private static final int QUERY_NODE = 7;
     private static final long TEN_SECONDS_US = 10_000_000L;
+    /** The pause of the alternating comparison in [4]: {@code sender.queryPauseMillis}'s default until session 6. */
+    private static final long PAUSING_MILLIS = 20;
 
     @Option(names = "--seconds", defaultValue = "60", description = "sustained phase length (default 60)")
     long seconds;
@@ -76,6 +78,10 @@ public final class BenchLoggerCommand implements Callable<Integer> {
 
     @Option(names = "--cache-mb", defaultValue = "512", description = "memory.cacheCapacityMegabytes (default 512, the logger's default)")
     int cacheMb;
+
+    @Option(names = "--backend-niceness", description = "writer.backendNiceness: the nice value of the writer's PostgreSQL"
+            + " backends (default: the logger's default, 10; 0 leaves them at the server's)")
+    Integer backendNiceness;
 
     @Option(names = "--compare-binary", description = "also time the raw COPY baseline in binary COPY format")
     boolean compareBinary;
@@ -112,12 +118,17 @@ public final class BenchLoggerCommand implements Callable<Integer> {
                     .set(LoggerSetting.WRITER_CONNECTIONS, Integer.toString(connections))
                     .set(LoggerSetting.RECEIVER_PORT, "0").set(LoggerSetting.SENDER_PORT, "0")
                     .set(LoggerSetting.MEMORY_CAPACITY_MB, Integer.toString(cacheMb));
+            if (backendNiceness != null) {
+                config.set(LoggerSetting.WRITER_BACKEND_NICENESS, Integer.toString(backendNiceness));
+            }
             Thread heap = heapSampler();
             try (NetworkStateLogger logger = new NetworkStateLogger(config)) {
                 logger.start();
-                System.out.printf("writer: batch %d, timer %d ms, max %,d rows / %d MB, %d connection(s); cache %d MB, critical %d%%, normal %d%%%n",
+                System.out.printf("writer: batch %d, timer %d ms, max %,d rows / %d MB, %d connection(s), backends at nice %d;"
+                                + " cache %d MB, critical %d%%, normal %d%%; viewer queries pause bulk work up to %d ms%n",
                         batch, config.batchTimeoutMillis(), config.maxBatchRows(), config.maxBatchBytes() >> 20,
-                        config.writerConnections(), cacheMb, config.criticalPercent(), config.normalPercent());
+                        config.writerConnections(), config.backendNiceness(), cacheMb, config.criticalPercent(),
+                        config.normalPercent(), config.queryPauseMillis());
                 Sustained s = sustained(logger, target);
                 baselines(target, s);
                 latency(logger, config.batchTimeoutMillis());
@@ -317,14 +328,15 @@ public final class BenchLoggerCommand implements Callable<Integer> {
     }
 
     /**
-     * 1,000 queries over TCP. With {@code priority}, the baseline is measured in the same phase: blocks of 50
-     * queries alternate between the logger's setting ({@code sender.queryPauseMillis}) and no pause at all, so both
+     * 1,000 queries over TCP. With {@code priority}, a comparison is measured in the same phase: blocks of 50
+     * queries alternate between the logger's setting ({@code sender.queryPauseMillis}, 0 by default) and the writer
+     * and receivers pausing up to {@value #PAUSING_MILLIS} ms for each query (the default until session 6), so both
      * see the same load; the target is checked on the setting's queries.
      */
     private void tcpQueries(String when, ViewerClient viewer, EventCache cache, int node, LongSupplier end, double targetMs,
                             QueryPriority priority) throws Exception {
         Histogram h = new Histogram(3);
-        Histogram unpaused = new Histogram(3);
+        Histogram pausing = new Histogram(3);
         long pauseMillis = Long.parseLong(LoggerSetting.SENDER_QUERY_PAUSE.defaultValue());
         long gcBefore = gcMillis();
         long unwrittenBefore = cache.unwrittenCount();
@@ -334,7 +346,7 @@ public final class BenchLoggerCommand implements Callable<Integer> {
         for (int i = 0; i < (priority == null ? 1000 : 2000); i++) {
             boolean baseline = priority != null && (i / 50) % 2 == 1;
             if (priority != null && i % 50 == 0) {
-                priority.maxPauseMillis(baseline ? 0 : pauseMillis);
+                priority.maxPauseMillis(baseline ? PAUSING_MILLIS : pauseMillis);
             }
             long to = end.getAsLong();
             long g0 = gcCount();
@@ -342,7 +354,7 @@ public final class BenchLoggerCommand implements Callable<Integer> {
             found = viewer.historyColumns(new int[] {node}, to - TEN_SECONDS_US, to).size(); // a viewer's plot path
             long micros = (System.nanoTime() - q0) / 1000;
             if (baseline) {
-                unpaused.recordValue(micros);
+                pausing.recordValue(micros);
                 continue;
             }
             h.recordValue(micros);
@@ -350,10 +362,11 @@ public final class BenchLoggerCommand implements Callable<Integer> {
         }
         if (priority != null) {
             priority.maxPauseMillis(pauseMillis);
-            report.info("[4] baseline: the same query over TCP, " + when + ", writer and receivers not pausing"
-                            + " (sender.queryPauseMillis 0; blocks of 50 alternating with the setting's)",
-                    String.format("p50 / p99 / max %.2f / %.2f / %.1f ms", unpaused.getValueAtPercentile(50) / 1000.0,
-                            unpaused.getValueAtPercentile(99) / 1000.0, unpaused.getMaxValue() / 1000.0));
+            report.info("[4] comparison: the same query over TCP, " + when + ", writer and receivers pausing for it"
+                            + " (sender.queryPauseMillis " + PAUSING_MILLIS + "; blocks of 50 alternating with the setting's "
+                            + pauseMillis + ")",
+                    String.format("p50 / p99 / max %.2f / %.2f / %.1f ms", pausing.getValueAtPercentile(50) / 1000.0,
+                            pausing.getValueAtPercentile(99) / 1000.0, pausing.getMaxValue() / 1000.0));
         }
         Thread.currentThread().setPriority(Thread.NORM_PRIORITY);
         queryFigure("ViewerClient over TCP", when, h, found, unwrittenBefore, cache.unwrittenCount(), gcMillis() - gcBefore,

@@ -90,9 +90,18 @@ public final class BatchWriter implements Runnable {
         this.onGiveUp = onGiveUp;
         this.lanes = new WriterLane[Math.max(1, settings.connections())];
         for (int i = 0; i < lanes.length; i++) {
-            lanes[i] = new WriterLane(store, "fdnet-writer-connection-" + (i + 1));
+            lanes[i] = new WriterLane(store, "fdnet-writer-connection-" + (i + 1),
+                    bulkPriority(settings.priorityEnabled(), false));
         }
         this.sizer = new BatchSizer(settings.batchSize(), settings.maxBatchRows(), lanes.length);
+    }
+
+    /** The Java priority of the threads that write: see {@link #priority(boolean)}. */
+    static int bulkPriority(boolean enabled, boolean critical) {
+        if (!enabled) {
+            return Thread.NORM_PRIORITY;
+        }
+        return critical ? Thread.MAX_PRIORITY : Thread.MIN_PRIORITY;
     }
 
     /** The writer's connections to the database ({@code writer.connections}). */
@@ -389,9 +398,13 @@ public final class BatchWriter implements Runnable {
         }
     }
 
-    /** Raises (critical level) or lowers (normal level) every thread that writes: this one and each lane's. */
+    /**
+     * Raises (critical level) or lowers (normal level) every thread that writes: this one and each lane's. With
+     * {@code priority.enabled} the normal level is the minimum priority — bulk work, behind the network and the
+     * viewers' threads — and the critical level the maximum; without it, both are normal.
+     */
     private void priority(boolean high) {
-        int wanted = settings.priorityEnabled() && high ? Thread.MAX_PRIORITY : Thread.NORM_PRIORITY;
+        int wanted = bulkPriority(settings.priorityEnabled(), high);
         if (Thread.currentThread().getPriority() != wanted) {
             Thread.currentThread().setPriority(wanted);
         }

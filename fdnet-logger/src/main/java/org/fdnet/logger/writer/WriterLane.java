@@ -34,10 +34,11 @@ final class WriterLane implements AutoCloseable {
     private final ExecutorService thread;
     private Connection connection; // used on the lane's thread only
     private volatile Thread worker;
-    private volatile int priority = Thread.NORM_PRIORITY;
+    private volatile int priority;
 
-    WriterLane(EventStore store, String name) {
+    WriterLane(EventStore store, String name, int priority) {
         this.store = store;
+        this.priority = priority;
         this.thread = Executors.newSingleThreadExecutor(r -> {
             Thread t = new Thread(r, name);
             t.setDaemon(true);

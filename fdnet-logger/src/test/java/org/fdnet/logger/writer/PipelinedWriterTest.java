@@ -130,7 +130,8 @@ class PipelinedWriterTest {
             }
             List<CachedEvent> batchN = named(run, ids[0], "Second", 2, 2_000);
             List<CachedEvent> batchN1 = named(run, ids[0], "Third", 3, 3_000);
-            try (WriterLane laneA = new WriterLane(store, "test-lane-a"); WriterLane laneB = new WriterLane(store, "test-lane-b")) {
+            try (WriterLane laneA = new WriterLane(store, "test-lane-a", Thread.NORM_PRIORITY);
+                 WriterLane laneB = new WriterLane(store, "test-lane-b", Thread.NORM_PRIORITY)) {
                 CompletableFuture<Void> nDone = new CompletableFuture<>();
                 CompletableFuture<Void> n1 = laneB.write(batchN1, List.of(), nDone);
                 awaitOpenTransactionHoldingALock();

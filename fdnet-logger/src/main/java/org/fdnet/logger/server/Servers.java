@@ -17,8 +17,7 @@ public final class Servers {
         int maxFrame = config.maxFrameBytes();
         return new TcpServer("receiver", config.receiverAddress(), config.receiverPort(),
                 new ConnectionFactory("receiver", config.receiverMaxClients(),
-                        s -> new ReceiverConnection(s, maxFrame, cache, directory, owners, queries),
-                        config.priorityEnabled() ? Thread.MIN_PRIORITY : Thread.NORM_PRIORITY)); // bulk work
+                        s -> new ReceiverConnection(s, maxFrame, cache, directory, owners, queries)));
     }
 
     public static TcpServer sender(LoggerConfig config, ViewerService viewers) throws IOException {

@@ -22,8 +22,9 @@ import org.slf4j.LoggerFactory;
  * it). Only for a server reached over loopback or a Unix socket: a backend on another host is not ours to touch.
  * A backend of another user (a system PostgreSQL while the logger is not root) cannot be reniced: the first such
  * failure is logged as a warning naming the backend and the reason, later ones at debug level; writing goes on.
+ * ({@code bench logger}'s raw-COPY baselines use it too, so that they run at the writer's priorities.)
  */
-final class BackendNiceness {
+public final class BackendNiceness {
     private static final Logger LOG = LoggerFactory.getLogger(BackendNiceness.class);
     private static final long RENICE_TIMEOUT_SECONDS = 5;
 
@@ -31,7 +32,7 @@ final class BackendNiceness {
     private final AtomicBoolean warned = new AtomicBoolean();
 
     /** @param niceness 0 (leave the backends alone) to 19 */
-    BackendNiceness(int niceness) {
+    public BackendNiceness(int niceness) {
         if (niceness < 0 || niceness > 19) {
             throw new IllegalArgumentException("writer.backendNiceness must be 0 to 19, was " + niceness);
         }
@@ -39,7 +40,7 @@ final class BackendNiceness {
     }
 
     /** Applies the nice value to the backend serving {@code c}, if it is on this host; never throws. */
-    void apply(Connection c) {
+    public void apply(Connection c) {
         if (niceness == 0) {
             return;
         }

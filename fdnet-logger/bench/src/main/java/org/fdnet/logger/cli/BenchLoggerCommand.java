@@ -23,6 +23,7 @@ import org.fdnet.logger.store.DatabaseTarget;
 import org.fdnet.logger.store.EmbeddedDatabase;
 import org.fdnet.logger.store.QueryPriority;
 import org.fdnet.logger.store.SourceDirectory;
+import org.fdnet.logger.writer.BatchWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -130,7 +131,7 @@ public final class BenchLoggerCommand implements Callable<Integer> {
                         config.writerConnections(), config.backendNiceness(), cacheMb, config.criticalPercent(),
                         config.normalPercent(), config.queryPauseMillis());
                 Sustained s = sustained(logger, target);
-                baselines(target, s);
+                baselines(target, s, config);
                 latency(logger, config.batchTimeoutMillis());
                 burstAndQueries(logger, target);
             } finally {
@@ -195,9 +196,12 @@ public final class BenchLoggerCommand implements Callable<Integer> {
     }
 
     /** Phase 2: the same rows by raw COPY, with the writer's batch sizes and with 100,000-row batches. */
-    private void baselines(DatabaseTarget target, Sustained s) throws SQLException, InterruptedException {
-        System.out.printf("%n[2] baselines: raw COPY of the same %,d rows, same table definition, one thread ...%n", s.stored);
-        RawCopyBaseline baseline = new RawCopyBaseline(target, nodes);
+    private void baselines(DatabaseTarget target, Sustained s, LoggerConfig config) throws SQLException, InterruptedException {
+        System.out.printf("%n[2] baselines: raw COPY of the same %,d rows, same table definition, one thread, at the writer's"
+                + " priorities (backends at nice %d, threads at Java priority %d) ...%n", s.stored, config.backendNiceness(),
+                BatchWriter.bulkPriority(config.priorityEnabled(), false));
+        RawCopyBaseline baseline = new RawCopyBaseline(target, nodes, config.backendNiceness(),
+                BatchWriter.bulkPriority(config.priorityEnabled(), false)); // at the writer's priorities
         double raw = baseline.run(s.stored, s.batchSizes, RawCopyBaseline.Format.TEXT);
         if (s.connections > 1) {
             System.out.printf("  ... and pipelined like the writer on %d connections (COPY while the batch before commits,"

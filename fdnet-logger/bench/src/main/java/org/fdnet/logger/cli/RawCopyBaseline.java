@@ -13,6 +13,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
 import org.fdnet.event.ValueType;
+import org.fdnet.logger.store.BackendNiceness;
 import org.fdnet.logger.store.DatabaseTarget;
 import org.postgresql.PGConnection;
 import org.postgresql.copy.CopyIn;
@@ -33,21 +34,36 @@ final class RawCopyBaseline {
 
     private final DatabaseTarget target;
     private final int nodes;
+    private final BackendNiceness backends;
+    private final int threadPriority;
 
-    RawCopyBaseline(DatabaseTarget target, int nodes) {
+    /**
+     * @param backendNiceness and
+     * @param threadPriority  the writer's: the baseline's backends and COPY threads run at the priorities the
+     *                        logger's writer runs at, so that on a loaded machine the ratio still compares like
+     *                        with like
+     */
+    RawCopyBaseline(DatabaseTarget target, int nodes, int backendNiceness, int threadPriority) {
         this.target = target;
         this.nodes = nodes;
+        this.backends = new BackendNiceness(backendNiceness);
+        this.threadPriority = threadPriority;
     }
 
     /** Rows per second for {@code rows} rows cut into batches of {@code sizes} (the last size repeats). */
     double run(long rows, int[] sizes, Format format) throws SQLException {
+        int callerPriority = Thread.currentThread().getPriority();
         try (Connection c = target.open(); Statement s = c.createStatement()) {
             freshBaselineTable(s);
+            backends.apply(c);
+            Thread.currentThread().setPriority(threadPriority);
             long t0 = System.nanoTime();
             copy(c, rows, sizes, format, 0, 1);
             double rate = rows / ((System.nanoTime() - t0) / 1e9);
             s.execute("DROP TABLE bench_baseline");
             return rate;
+        } finally {
+            Thread.currentThread().setPriority(callerPriority);
         }
     }
 
@@ -101,6 +117,7 @@ final class RawCopyBaseline {
                             turn.fail();
                         }
                     }, "bench-pipelined-copy-" + i);
+                    t.setPriority(threadPriority);
                     threads.add(t);
                     t.start();
                 }
@@ -172,6 +189,7 @@ final class RawCopyBaseline {
                             failure.compareAndSet(null, e);
                         }
                     }, "bench-copy-" + i);
+                    t.setPriority(threadPriority);
                     threads.add(t);
                     t.start();
                 }
@@ -265,6 +283,7 @@ final class RawCopyBaseline {
         for (int i = 0; i < n; i++) {
             Connection o = target.open();
             open.add(o);
+            backends.apply(o);
             o.setAutoCommit(autoCommit);
         }
     }

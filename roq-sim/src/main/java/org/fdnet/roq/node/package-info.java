@@ -2,8 +2,8 @@
  * RoQ's nodes, usable by {@code class} in a {@code .fdn}: a {@link org.fdnet.roq.node.RoqSensor} for each
  * sensor (parameter {@code channel}), {@link org.fdnet.roq.node.JointTargets} for the servos, and the
  * Relations of the motion network (stand, crawl gait, keep balance, hold course, probe the ground, level the body,
- * posture integration, inverse kinematics, fall detection, the tilt reflex). Relations act on what a real RoQ senses, never
- * on ground truth ({@code body_position}, {@code centre_of_mass}: for measurement and tests only);
+ * posture integration, inverse kinematics, fall detection, the tilt reflex). Relations act on what a real RoQ senses,
+ * never on ground truth ({@code body_position}, {@code centre_of_mass}: for measurement and tests only);
  * {@link org.fdnet.roq.node.SensedFeet} turns joint angles, sole forces and attitude into feet and centre of
  * pressure for the closed loops.
  *

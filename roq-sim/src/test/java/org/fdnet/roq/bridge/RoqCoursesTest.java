@@ -35,7 +35,7 @@ class RoqCoursesTest {
     private static final Path WALK = Path.of("..", "networks", "roq-walk.fdn");
     /** Simulated seconds per run. */
     private static final int SECONDS = 40;
-    /** Rubble seeds besides the built-in course's 2004 (21: the crawl stalled on a block there and turned away, session 5). */
+    /** Rubble seeds besides the built-in course's 2004 (21: session 5's crawl stalled on a block there and turned). */
     private static final long[] SEEDS = {11, 12, 13, 21};
 
     /** Simulated seconds of the heading runs: about 3 m of rubble (5 s of them standing while the gyro settles). */
@@ -166,7 +166,7 @@ class RoqCoursesTest {
         for (long seed : SEEDS) {
             labels.add("roq-rubble rubble " + seed);
         }
-        // measured 1.73, 1.65, 1.56, 1.77, 1.50 m (seeds 2004, 11, 12, 13, 21): median 1.65, the threshold 21 % below it
+        // measured 1.73, 1.65, 1.56, 1.77, 1.50 m (seeds 2004, 11, 12, 13, 21): median 1.65, the threshold 21 % below
         for (String label : labels) {
             holds(soft, run(label), 1.3, LEVEL_TILT);
         }

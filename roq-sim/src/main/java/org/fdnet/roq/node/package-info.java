@@ -1,9 +1,9 @@
 /**
  * RoQ's nodes, usable by {@code class} in a {@code .fdn}: a {@link org.fdnet.roq.node.RoqSensor} for each
  * sensor (parameter {@code channel}), {@link org.fdnet.roq.node.JointTargets} for the servos, and the
- * Relations of the motion network (stand, crawl gait, keep balance, hold course, probe the ground, posture
- * integration, inverse kinematics, fall detection, the tilt reflex). Relations act on what a real RoQ senses, never
- * on ground truth ({@code body_position}, {@code centre_of_mass}: for measurement and tests only);
+ * Relations of the motion network (stand, crawl gait, keep balance, hold course, probe the ground, level the body,
+ * posture integration, inverse kinematics, fall detection, the tilt reflex). Relations act on what a real RoQ senses,
+ * never on ground truth ({@code body_position}, {@code centre_of_mass}: for measurement and tests only);
  * {@link org.fdnet.roq.node.SensedFeet} turns joint angles, sole forces and attitude into feet and centre of
  * pressure for the closed loops.
  *
@@ -21,6 +21,7 @@
  *   closed loops (every 10 ms):
  *   gait phase, joint angles, foot forces, attitude ──▶ KeepBalance ──balance shift (12)──▶ PostureIntegration
  *   imu gyro, attitude, joint angles, foot forces, gait phase ──▶ HoldCourse ──steer (rad per stance)──▶ CrawlGait
+ *   attitude, gait feet ──▶ LevelBody ──level (12, z only: the body back to level on a slope)──▶ PostureIntegration
  *
  *   tilt reflex (no period, fires on every snapshot):
  *   attitude, imu gyro, gait feet, gait phase ──▶ TiltReflex ──reflex press (12)──▶ PostureIntegration ──▶ IK

@@ -12,7 +12,7 @@ import java.util.List;
  * @param length        extent along x, m (the course spans −length/2 … +length/2)
  * @param width         extent along y, m
  * @param cellSize      heightfield resolution, m
- * @param slopeDegrees  {@link TerrainKind#SLOPE}: incline after x = 0, degrees
+ * @param slopeDegrees  {@link TerrainKind#SLOPE}: incline after x = 0, degrees (negative: falling along +x)
  * @param rubbleHeight  {@link TerrainKind#RUBBLE}: tallest block, m
  * @param rubbleBlock   {@link TerrainKind#RUBBLE}: block edge, m
  * @param seed          {@link TerrainKind#RUBBLE}: seed of the block heights (same seed, same course)

@@ -51,7 +51,9 @@ public final class Heightfield {
                 double y = -course.width() / 2 + r * course.width() / (rows - 1);
                 double z = switch (course.terrain()) {
                     case FLAT -> 0;
-                    case SLOPE -> Math.max(0, x) * tan;
+                    // rising along +x after x = 0; a negative slope falls there instead, from a level part raised
+                    // so that the course's far end is at 0 (heights are never negative)
+                    case SLOPE -> (Math.max(0, x) - (tan < 0 ? course.length() / 2 : 0)) * tan;
                     case RUBBLE -> {
                         if (Math.hypot(x - course.startX(), y - course.startY()) < START_CLEARANCE) {
                             yield 0;

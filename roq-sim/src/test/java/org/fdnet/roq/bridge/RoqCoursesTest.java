@@ -22,7 +22,7 @@ import org.slf4j.LoggerFactory;
 
 /**
  * roq-rubble.fdn (and roq-walk.fdn on level ground) on every built-in course and on courses it was not tuned on —
- * five rubble seeds with blocks up to 6 cm, a 15° slope — stepped, with seeded sensor noise as in the demo. Every
+ * five rubble seeds with blocks up to 6 cm, 15° up and down — stepped, with seeded sensor noise as in the demo. Every
  * run must keep RoQ up (FallDetector), break no cell under a loaded foot, stay near its course line and heading
  * (averaged over a crawl cycle), tilt no more than the ground asks, and walk at least a distance set 20 % or more
  * below the median measured over these runs (docs/roq-networks.md lists the measured figures). The runs are
@@ -35,13 +35,15 @@ class RoqCoursesTest {
     private static final Path WALK = Path.of("..", "networks", "roq-walk.fdn");
     /** Simulated seconds per run. */
     private static final int SECONDS = 40;
-    /** Rubble seeds besides the built-in course's 2004. */
-    private static final long[] SEEDS = {11, 12, 13, 14};
+    /** Rubble seeds besides the built-in course's 2004 (21: session 5's crawl stalled on a block there and turned). */
+    private static final long[] SEEDS = {11, 12, 13, 21};
 
     /** Simulated seconds of the heading runs: about 3 m of rubble (5 s of them standing while the gyro settles). */
     private static final int HEADING_SECONDS = 70;
     private static final String HELD = "roq-rubble rubble 12, 70 s";
     private static final String UNHELD = "roq-rubble rubble 12, 70 s, module Course unloaded";
+    private static final String DOWN = "roq-rubble slope 15 down";
+    private static final String DOWN_UNLEVELLED = "roq-rubble slope 15 down, module Posture unloaded";
 
     private static final Map<String, Future<CourseRun>> RUNS = new LinkedHashMap<>();
     private static ExecutorService pool;
@@ -53,7 +55,8 @@ class RoqCoursesTest {
         start("roq-rubble flat", RUBBLE, CourseLoader.resolve("flat"), 2);
         start("roq-rubble slope (built-in, 10 up)", RUBBLE, CourseLoader.resolve("slope"), 3);
         start("roq-rubble slope 15 up", RUBBLE, slope(15), 4);
-        start("roq-rubble slope 15 down", RUBBLE, slope(-15), 40);
+        start(DOWN, RUBBLE, slope(-15), 40);
+        start(DOWN_UNLEVELLED, RUBBLE, slope(-15), SECONDS, 40, "Posture");
         start("roq-rubble rubble 2004", RUBBLE, CourseLoader.resolve("rubble"), 5);
         for (long seed : SEEDS) {
             start("roq-rubble rubble " + seed, RUBBLE, rubble(seed), 5 + seed);
@@ -81,10 +84,13 @@ class RoqCoursesTest {
         }));
     }
 
-    /** Level up to x = 0, then {@code degrees} up (or down, negative); RoQ starts 0.4 m before the incline. */
+    /**
+     * Level up to x = 0, then {@code degrees} up (or down, negative) to x = 3 (2.4 m down: 40 s of descent do not
+     * reach its end); RoQ starts 0.4 m before the incline.
+     */
     static Course slope(int degrees) throws Exception {
         return CourseLoader.parse("slope " + degrees, "name = slope" + degrees + "\nterrain = slope\nslope = " + degrees
-                + "\nlength = 4\nwidth = 2\ncell = 0.05\nstart = -0.4 0\n");
+                + "\nlength = 6\nwidth = 2\ncell = 0.05\nstart = -0.4 0\n");
     }
 
     static Course rubble(long seed) throws Exception {
@@ -123,20 +129,33 @@ class RoqCoursesTest {
     @Test
     void shouldWalkLevelGroundOnItsLine() throws Exception {
         SoftAssertions soft = new SoftAssertions();
-        // measured 1.03 and 1.88 m in 40 s (roq-rubble's 5 s of settling included)
+        // measured 1.03 and 1.87 m in 40 s (roq-rubble's 5 s of settling included)
         holds(soft, run("roq-walk flat"), 0.8, LEVEL_TILT);
-        holds(soft, run("roq-rubble flat"), 1.5, LEVEL_TILT);
+        holds(soft, run("roq-rubble flat"), 1.45, LEVEL_TILT);
         soft.assertAll();
     }
 
     @Test
     void shouldClimbAndDescendSlopesUpToFifteenDegrees() throws Exception {
         SoftAssertions soft = new SoftAssertions();
-        // measured 1.54 m (the built-in course: 1 m of level ground first), 1.16 m (0.75 m of it up the 15° incline)
-        // and 1.90 m down
+        // measured 1.51 m (the built-in course: 1 m of level ground first), 1.03 m (0.6 m of it up the 15° incline)
+        // and 2.40 m down, the body levelled by module Posture (without it RoQ tips over going down: below)
         holds(soft, run("roq-rubble slope (built-in, 10 up)"), 1.2, Math.toRadians(10) + SLOPE_TILT);
-        holds(soft, run("roq-rubble slope 15 up"), 0.9, Math.toRadians(15) + SLOPE_TILT);
-        holds(soft, run("roq-rubble slope 15 down"), 1.5, Math.toRadians(15) + SLOPE_TILT);
+        holds(soft, run("roq-rubble slope 15 up"), 0.8, Math.toRadians(15) + SLOPE_TILT);
+        holds(soft, run(DOWN), 1.9, Math.toRadians(15) + SLOPE_TILT);
+        soft.assertAll();
+    }
+
+    @Test
+    void shouldTipForwardGoingDownFifteenDegreesWithModulePostureUnloaded() throws Exception {
+        CourseRun levelled = run(DOWN);
+        CourseRun unlevelled = run(DOWN_UNLEVELLED);
+        // measured: levelled tilt 0.21 rad; unlevelled the body pitches with the slope and over it, 0.64-0.67 rad and
+        // FallDetector's latch on noise seeds 40, 44 and 45 (0.84 and 0.76 rad going down 20°)
+        SoftAssertions soft = new SoftAssertions();
+        soft.assertThat(unlevelled.tilt()).as(unlevelled + " against " + levelled + ": largest roll or pitch, rad")
+                .isGreaterThan(Math.toRadians(15) + SLOPE_TILT);
+        soft.assertThat(unlevelled.tilt()).as(unlevelled + " against " + levelled).isGreaterThan(levelled.tilt() + 0.2);
         soft.assertAll();
     }
 
@@ -147,7 +166,7 @@ class RoqCoursesTest {
         for (long seed : SEEDS) {
             labels.add("roq-rubble rubble " + seed);
         }
-        // measured 1.71, 1.51, 1.68, 1.71, 1.69 m (seeds 2004, 11–14): median 1.69, the threshold 23 % below it
+        // measured 1.73, 1.65, 1.56, 1.77, 1.50 m (seeds 2004, 11, 12, 13, 21): median 1.65, the threshold 21 % below
         for (String label : labels) {
             holds(soft, run(label), 1.3, LEVEL_TILT);
         }

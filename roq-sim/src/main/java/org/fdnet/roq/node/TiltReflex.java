@@ -16,8 +16,8 @@ import org.fdnet.runtime.Value;
  * {roll rate, pitch rate, yaw rate} (rad/s, {@code imu_gyro}; may be missing, then only the tilt counts); (2) the
  * gait's feet (12 numbers, body frame); (3) the gait phase {leg, 1 while in the air}. Output: a correction of the
  * feet (12 numbers) for {@link PostureIntegration}, so it reaches the servos through the same inverse kinematics and
- * {@link JointTargets} as the gait: zero while RoQ does not tip. An input named {@code balance shift} (optional: the
- * shift {@link KeepBalance} adds to every foot) lets the brace take Balance's lean back, see {@code unlean}.
+ * {@link JointTargets} as the gait: zero while RoQ does not tip. Inputs named {@code balance shift} (the shift
+ * {@link KeepBalance} adds to every foot) and {@code foot forces} (the soles, N) are optional: see {@code unlean}.
  *
  * <p>It triggers when |roll| or |pitch| exceeds {@code tilt} (rad, default 0.15) or the roll or pitch rate exceeds
  * {@code rate} (rad/s, default 1.0; the undisturbed crawl reaches 0.125 rad and 0.7 rad/s), and holds {@code hold} s
@@ -31,11 +31,13 @@ import org.fdnet.runtime.Value;
  *   far against the fall, away from the edge it tips over;</li>
  *   <li>every foot rises {@code crouch} m (default 0): the body sinks, which shortens the lever a push at the body
  *   has about the feet;</li>
- *   <li>the share {@code unlean} (0..1, default 0) of Balance's lean is taken back: with the swinging foot down the
- *   whole rectangle of the four feet is the support, and the lean towards the three-foot triangle's centroid (up to
- *   15 cm) only brings the body nearer the edges on its side — sideways and backwards, where session 5's network
- *   survived smaller pushes than RoQ without Balance. It reads Balance's latest shift on every firing, so Balance,
- *   still integrating, cannot pull the body back while the brace holds.</li>
+ *   <li>once the caught foot is down (its sole, input {@code foot forces}, carries more than 20 N; at once when no
+ *   foot was in the air or the soles are not read), the share {@code unlean} (0..1, default 0) of Balance's lean is
+ *   taken back: with four feet down the whole rectangle is the support, and the lean towards the three-foot
+ *   triangle's centroid (up to 15 cm) only brings the body nearer the edges on its side — sideways and backwards,
+ *   where session 5's network survived smaller pushes than RoQ without Balance. Before the foot is down the lean is
+ *   what keeps the body over the triangle. It reads Balance's latest shift on every firing, so Balance, still
+ *   integrating, cannot pull the body back while the brace holds.</li>
  * </ul>
  * The way RoQ falls is the direction the top of the body moves, seen from above: (pitch rate, −roll rate) from the
  * gyro while a rate triggers, else (pitch, −roll) from the inclinometer (pitch > 0: nose down; roll > 0: left side
@@ -48,6 +50,8 @@ public class TiltReflex extends Relation {
     private static final int GYRO = 1;
     private static final int FEET = 2;
     private static final int PHASE = 3;
+    /** A sole carrying more than this is down, N (RoQ's stance feet carry 50–90 N each when it walks). */
+    private static final double LOADED = 20;
 
     private double tilt;
     private double rate;
@@ -62,6 +66,8 @@ public class TiltReflex extends Relation {
     private double fallX;
     private double fallY;
     private int caughtLeg = -1;
+    /** Whether all four feet have been down since this brace began: then Balance's lean is given back. */
+    private boolean fourDown;
     private final double[] correction = new double[3 * LEGS];
     private boolean written;
 
@@ -128,8 +134,9 @@ public class TiltReflex extends Relation {
             caughtLeg = -1;
         }
         double brace = now <= holdUntil ? 1 : release > 0 ? Math.max(0, 1 - (now - holdUntil) / release) : 0;
-        if (brace(caughtLeg == swinging ? caughtLeg : -1, feet, SensedFeet.named(c, "balance shift"), brace)
-                || !written) {
+        int leg = caughtLeg == swinging ? caughtLeg : -1;
+        fourDown = brace > 0 && (fourDown || down(leg, SensedFeet.named(c, "foot forces")));
+        if (brace(leg, feet, fourDown ? SensedFeet.named(c, "balance shift") : null, brace) || !written) {
             c.outputAll(Value.ofDoubles(correction));
             written = true;
         }
@@ -157,6 +164,14 @@ public class TiltReflex extends Relation {
             fallTowards(attitude.element(1), -attitude.element(0));
         }
         return tilted || turning;
+    }
+
+    /**
+     * Whether the caught foot ({@code leg}, −1: none in the air) is down: its sole carries more than {@link #LOADED}
+     * N. Without sole forces ({@code soles} missing) it counts as down at once.
+     */
+    private static boolean down(int leg, Value soles) {
+        return leg < 0 || soles == null || soles.length() < LEGS || soles.element(leg) > LOADED;
     }
 
     private void fallTowards(double x, double y) {

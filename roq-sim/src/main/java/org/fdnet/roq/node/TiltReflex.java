@@ -16,18 +16,28 @@ import org.fdnet.runtime.Value;
  * {roll rate, pitch rate, yaw rate} (rad/s, {@code imu_gyro}; may be missing, then only the tilt counts); (2) the
  * gait's feet (12 numbers, body frame); (3) the gait phase {leg, 1 while in the air}. Output: a correction of the
  * feet (12 numbers) for {@link PostureIntegration}, so it reaches the servos through the same inverse kinematics and
- * {@link JointTargets} as the gait: zero while RoQ does not tip.
+ * {@link JointTargets} as the gait: zero while RoQ does not tip. Inputs named {@code balance shift} (the shift
+ * {@link KeepBalance} adds to every foot) and {@code foot forces} (the soles, N) are optional: see {@code unlean}.
  *
  * <p>It triggers when |roll| or |pitch| exceeds {@code tilt} (rad, default 0.15) or the roll or pitch rate exceeds
  * {@code rate} (rad/s, default 1.0; the undisturbed crawl reaches 0.125 rad and 0.7 rad/s), and holds {@code hold} s
  * (default 0.3) after the last reading that triggered it. While it holds:
  * <ul>
  *   <li>the swinging foot goes down to the height of the feet on the ground and {@code press} m (default 0.01)
- *   below it, and {@code step} m (default 0) along the way RoQ falls: a catching step, where the body goes;</li>
+ *   below it, and up to {@code step} m (default 0) along the way RoQ falls: a catching step, where the body goes,
+ *   scaled by how far that foot lies on the side RoQ falls to (the cosine between the foot's direction from the
+ *   body's centre and the fall; none for a foot on the other side, which would only narrow the stance);</li>
  *   <li>the feet on the ground move {@code shift} m (default 0) along the way RoQ falls, that is the body moves that
  *   far against the fall, away from the edge it tips over;</li>
  *   <li>every foot rises {@code crouch} m (default 0): the body sinks, which shortens the lever a push at the body
- *   has about the feet.</li>
+ *   has about the feet;</li>
+ *   <li>once the caught foot is down (its sole, input {@code foot forces}, carries more than 20 N; at once when no
+ *   foot was in the air or the soles are not read), the share {@code unlean} (0..1, default 0) of Balance's lean is
+ *   taken back: with four feet down the whole rectangle is the support, and the lean towards the three-foot
+ *   triangle's centroid (up to 15 cm) only brings the body nearer the edges on its side — sideways and backwards,
+ *   where session 5's network survived smaller pushes than RoQ without Balance. Before the foot is down the lean is
+ *   what keeps the body over the triangle. It reads Balance's latest shift on every firing, so Balance, still
+ *   integrating, cannot pull the body back while the brace holds.</li>
  * </ul>
  * The way RoQ falls is the direction the top of the body moves, seen from above: (pitch rate, −roll rate) from the
  * gyro while a rate triggers, else (pitch, −roll) from the inclinometer (pitch > 0: nose down; roll > 0: left side
@@ -40,6 +50,8 @@ public class TiltReflex extends Relation {
     private static final int GYRO = 1;
     private static final int FEET = 2;
     private static final int PHASE = 3;
+    /** A sole carrying more than this is down, N (RoQ's stance feet carry 50–90 N each when it walks). */
+    private static final double LOADED = 20;
 
     private double tilt;
     private double rate;
@@ -49,10 +61,13 @@ public class TiltReflex extends Relation {
     private double shift;
     private double crouch;
     private double release;
+    private double unlean;
     private double holdUntil = Double.NEGATIVE_INFINITY;
     private double fallX;
     private double fallY;
     private int caughtLeg = -1;
+    /** Whether all four feet have been down since this brace began: then Balance's lean is given back. */
+    private boolean fourDown;
     private final double[] correction = new double[3 * LEGS];
     private boolean written;
 
@@ -66,6 +81,7 @@ public class TiltReflex extends Relation {
         shift = p.doubleValue("shift", 0);
         crouch = p.doubleValue("crouch", 0);
         release = p.doubleValue("release", 0);
+        unlean = p.doubleValue("unlean", 0);
         if (!(tilt > 0 && tilt < 1)) {
             throw p.invalid("tilt", "must lie between 0 and 1 rad, was " + tilt);
         }
@@ -89,6 +105,9 @@ public class TiltReflex extends Relation {
         }
         if (!(release >= 0 && release <= 5)) {
             throw p.invalid("release", "must lie between 0 and 5 s, was " + release);
+        }
+        if (!(unlean >= 0 && unlean <= 1)) {
+            throw p.invalid("unlean", "must lie between 0 and 1 (the share of Balance's lean taken back), was " + unlean);
         }
         if (p.has("period")) {
             throw p.invalid("period", "the tilt reflex fires on its inputs; a period would only delay it");
@@ -115,7 +134,9 @@ public class TiltReflex extends Relation {
             caughtLeg = -1;
         }
         double brace = now <= holdUntil ? 1 : release > 0 ? Math.max(0, 1 - (now - holdUntil) / release) : 0;
-        if (brace(caughtLeg == swinging ? caughtLeg : -1, feet, brace) || !written) {
+        int leg = caughtLeg == swinging ? caughtLeg : -1;
+        fourDown = brace > 0 && (fourDown || down(leg, SensedFeet.named(c, "foot forces")));
+        if (brace(leg, feet, fourDown ? SensedFeet.named(c, "balance shift") : null, brace) || !written) {
             c.outputAll(Value.ofDoubles(correction));
             written = true;
         }
@@ -145,6 +166,14 @@ public class TiltReflex extends Relation {
         return tilted || turning;
     }
 
+    /**
+     * Whether the caught foot ({@code leg}, −1: none in the air) is down: its sole carries more than {@link #LOADED}
+     * N. Without sole forces ({@code soles} missing) it counts as down at once.
+     */
+    private static boolean down(int leg, Value soles) {
+        return leg < 0 || soles == null || soles.length() < LEGS || soles.element(leg) > LOADED;
+    }
+
     private void fallTowards(double x, double y) {
         double n = Math.hypot(x, y);
         if (n > 0) {
@@ -155,10 +184,11 @@ public class TiltReflex extends Relation {
 
     /**
      * Sets the correction: leg {@code leg} (−1: none) down to the stance feet's height, {@code press} below and
-     * {@code step} along the fall; every other foot {@code shift} along the fall; all up {@code crouch}; the shift,
-     * step and crouch scaled by {@code brace} (1 while the reflex holds, fading to 0 after). True when it changed.
+     * up to {@code step} along the fall; every other foot {@code shift} along the fall; all up {@code crouch}; every
+     * foot back by {@code unlean} of Balance's shift {@code lean} (null: none); all but the lowering scaled by
+     * {@code brace} (1 while the reflex holds, fading to 0 after). True when it changed.
      */
-    private boolean brace(int leg, Value feet, double brace) {
+    private boolean brace(int leg, Value feet, Value lean, double brace) {
         double dz = 0;
         if (leg >= 0 && leg < LEGS) {
             double ground = 0;
@@ -167,11 +197,27 @@ public class TiltReflex extends Relation {
             }
             dz = Math.min(0, ground - feet.element(3 * leg + 2) - press);
         }
+        // four feet down make the whole rectangle the support: Balance's lean over the three-foot triangle only
+        // brings the body nearer the edges on its side, so give it back (the balance shift's negative, 12 numbers)
+        double backX = 0;
+        double backY = 0;
+        if (lean != null && lean.length() == 3 * LEGS) {
+            backX = -lean.element(0) * unlean * brace;
+            backY = -lean.element(1) * unlean * brace;
+        }
+        // a catching step only catches on the side RoQ falls to: none for a foot on the other side
+        double stepped = 0;
+        if (leg >= 0 && leg < LEGS) {
+            double fx = feet.element(3 * leg);
+            double fy = feet.element(3 * leg + 1);
+            double n = Math.hypot(fx, fy);
+            stepped = n > 0 ? step * Math.max(0, (fx * fallX + fy * fallY) / n) : 0;
+        }
         boolean changed = false;
         for (int l = 0; l < LEGS; l++) {
-            double along = brace * (l == leg ? step : shift);
-            changed |= set(3 * l, along * fallX);
-            changed |= set(3 * l + 1, along * fallY);
+            double along = brace * (l == leg ? stepped : shift);
+            changed |= set(3 * l, along * fallX + backX);
+            changed |= set(3 * l + 1, along * fallY + backY);
             changed |= set(3 * l + 2, (l == leg ? dz : 0) + brace * crouch);
         }
         return changed;

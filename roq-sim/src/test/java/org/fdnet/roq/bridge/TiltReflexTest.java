@@ -32,7 +32,15 @@ class TiltReflexTest {
     static final Path NETWORK = Path.of("..", "networks", "roq-reflex-bench.fdn");
     /** The crawl's first swing is hind-right's, 0.4–1.1 s; push towards its corner (back and right) at 0.6 s. */
     private static final Push TIP_TOWARDS_HIND_RIGHT = new Push(0.6, 0.1, 200, 225);
+    /** A push towards the front-left corner, away from the hind-right foot in the air, at 0.6 s. */
+    private static final Push TIP_TOWARDS_FRONT_LEFT = new Push(0.6, 0.1, 200, 45);
+    private static final int FRONT_LEFT = 0;
     private static final int HIND_RIGHT = 3;
+    private static final NodeRef BALANCE_SHIFT = NodeRef.parse("balance shift", "Balance");
+    private static final NodeRef PRESS = NodeRef.parse("reflex press", "Reflex");
+    /** roq-reflex-bench's brace: the stance feet's move along the fall and the crouch, m. */
+    private static final double SHIFT = 0.08;
+    private static final double CROUCH = 0.05;
 
     @Test
     void shouldSetTheSwingingFootDownWhenAPushTipsRoq() throws Exception {
@@ -56,10 +64,12 @@ class TiltReflexTest {
             for (int t = 0; t < 300; t++) {
                 bridge.run(1);
                 double[] c = net.controller().value(press).asDoubles();
-                int frontLeft = 0;
-                // a stance foot moves the way RoQ falls (back and right): the body moves against it
-                backRight = Math.max(backRight, -c[3 * frontLeft] - c[3 * frontLeft + 1]);
-                lowered = Math.min(lowered, c[3 * HIND_RIGHT + 2] - c[3 * frontLeft + 2]);
+                double[] shift = net.controller().value(BALANCE_SHIFT).asDoubles();
+                // a stance foot moves the way RoQ falls (back and right): the body moves against it. What moves the
+                // feet is what Integration adds to the gait's: Balance's shift and the reflex's correction.
+                backRight = Math.max(backRight, -c[3 * FRONT_LEFT] - shift[3 * FRONT_LEFT]
+                        - c[3 * FRONT_LEFT + 1] - shift[3 * FRONT_LEFT + 1]);
+                lowered = Math.min(lowered, c[3 * HIND_RIGHT + 2] - c[3 * FRONT_LEFT + 2]);
             }
             assertThat(backRight).as("largest back-and-right move of the front-left foot while RoQ tips, m")
                     .isGreaterThan(0.05);
@@ -72,6 +82,54 @@ class TiltReflexTest {
                 }
             }
             assertThat(letGo).as("ms after the first 0.3 s until the correction is zero again").isBetween(0, 1499);
+        }
+    }
+
+    @Test
+    void shouldGiveBalancesLeanBackWhileItBraces() throws Exception {
+        try (PushedWalk walk = new PushedWalk(TIP_TOWARDS_HIND_RIGHT)) {
+            double lean = 0;
+            double largestTotal = 0;
+            int braced = 0;
+            for (int t = 0; t < 300; t++) {
+                walk.bridge.run(1);
+                double[] c = walk.press();
+                double[] shift = walk.shift();
+                // fully braced (the crouch fades out after the hold) and the caught hind-right foot down
+                if (c[3 * FRONT_LEFT + 2] == CROUCH && walk.bridge.lastSnapshot().footForce(HIND_RIGHT) > 20) {
+                    braced++;
+                    lean = Math.max(lean, Math.hypot(shift[3 * FRONT_LEFT], shift[3 * FRONT_LEFT + 1]));
+                    largestTotal = Math.max(largestTotal, Math.hypot(shift[3 * FRONT_LEFT] + c[3 * FRONT_LEFT],
+                            shift[3 * FRONT_LEFT + 1] + c[3 * FRONT_LEFT + 1]));
+                }
+            }
+            assertThat(braced).as("ms fully braced with the caught foot down after the push").isGreaterThan(50);
+            assertThat(lean).as("Balance's lean while the reflex braces, m").isGreaterThan(0.1);
+            assertThat(largestTotal).as("front-left foot's move from the gait's place (lean + brace), m: the brace's "
+                    + SHIFT + " m only").isLessThan(SHIFT + 0.005);
+        }
+    }
+
+    @Test
+    void shouldStepOnlyAFootOnTheSideRoqFallsTo() throws Exception {
+        try (PushedWalk walk = new PushedWalk(TIP_TOWARDS_FRONT_LEFT)) {
+            int caught = 0;
+            double apart = 0;
+            for (int t = 0; t < 300; t++) {
+                walk.bridge.run(1);
+                double[] c = walk.press();
+                double[] shift = walk.shift();
+                if (c[3 * HIND_RIGHT + 2] < c[3 * FRONT_LEFT + 2]) { // hind-right, in the air, set down
+                    caught++;
+                    // no horizontal correction, or (once it is down) only Balance's lean given back: lean + it = 0
+                    apart = Math.max(apart, Math.min(Math.hypot(c[3 * HIND_RIGHT], c[3 * HIND_RIGHT + 1]),
+                            Math.hypot(c[3 * HIND_RIGHT] + shift[3 * HIND_RIGHT],
+                                    c[3 * HIND_RIGHT + 1] + shift[3 * HIND_RIGHT + 1])));
+                }
+            }
+            assertThat(caught).as("ms the hind-right foot was set down after a push to the front-left").isPositive();
+            assertThat(apart).as("hind-right foot's move from the gait's place, m: no step across the body")
+                    .isLessThan(0.005);
         }
     }
 
@@ -104,6 +162,36 @@ class TiltReflexTest {
             assertThatThrownBy(() -> RuntimeNetwork.start(info,
                     RuntimeOptions.defaults().drivenClock(new DrivenClock(0))).close())
                     .hasStackTraceContaining(bad.name());
+        }
+    }
+
+    /** roq-reflex-bench walking on flat ground, stepped, up to the push. */
+    private static final class PushedWalk implements AutoCloseable {
+        private final RoqSimulator sim;
+        private final RuntimeNetwork net;
+        private final SimBridge bridge;
+
+        PushedWalk(Push push) throws Exception {
+            sim = RoqSimulator.open(Course.flat().withStimuli(List.of(push)), SimMode.STEPPED);
+            net = RuntimeNetwork.start(NetworkRepository.load(NETWORK),
+                    RuntimeOptions.defaults().drivenClock(new DrivenClock(0)));
+            bridge = SimBridge.stepped(net, sim, 0, 1);
+            bridge.run((int) push.firstTick());
+        }
+
+        double[] press() {
+            return net.controller().value(PRESS).asDoubles();
+        }
+
+        double[] shift() {
+            return net.controller().value(BALANCE_SHIFT).asDoubles();
+        }
+
+        @Override
+        public void close() throws Exception {
+            try (sim) {
+                net.close();
+            }
         }
     }
 

@@ -6,6 +6,7 @@ import java.time.LocalTime;
 import java.time.ZoneOffset;
 import java.util.List;
 import java.util.Locale;
+import org.fdnet.runtime.Value;
 
 /**
  * Where one stimulus's answer spent its time (bench roq (b) {@code --trace}): wall-clock moments, taken by value
@@ -20,7 +21,8 @@ import java.util.Locale;
  * The loop's tick clock is not read directly: a snapshot of tick n is published about {@code base + n} ms, where
  * {@code base} is the smallest {@code nanoTime − n ms} of the sensor values committed since the stimulus was armed
  * (the quickest read), so each stage is given in ms after tick S's publication, and the deadline to make tick A is
- * about {@code A − S} ms after it. With it: the garbage collections counted between the stimulus and the answer (all
+ * about {@code A − S} ms after it. Whether the reflex already held a correction (a brace under way) when S came is
+ * said too. With it: the garbage collections counted between the stimulus and the answer (all
  * collectors), the longest the logger client's {@code accept} took inside a commit from the stimulus to the targets
  * (the logger's share of the commit path), and the wall time (UTC, to match a {@code -Xlog:gc*,safepoint} file).
  */
@@ -31,6 +33,8 @@ final class AnswerStages {
     private volatile long shownTick = -1;
     private volatile long shown;
     private volatile String shownOn;
+    private volatile boolean pressHeld;
+    private volatile boolean heldAtShown;
     private volatile long reflex;
     private volatile String reflexOn;
     private volatile long targets;
@@ -81,15 +85,21 @@ final class AnswerStages {
     void shown(long tick) {
         shown = System.nanoTime();
         shownOn = Thread.currentThread().getName();
+        heldAtShown = pressHeld;
         shownTick = tick;
     }
 
-    /** The reflex wrote a value computed from {@code tick}. */
-    void reflexWrote(long tick) {
-        if (shownTick >= 0 && tick >= shownTick && reflex == 0) {
+    /** The reflex wrote {@code correction}, computed from its tick. */
+    void reflexWrote(Value correction) {
+        if (shownTick >= 0 && correction.tick() >= shownTick && reflex == 0) {
             reflex = System.nanoTime();
             reflexOn = Thread.currentThread().getName();
         }
+        boolean held = false;
+        for (int i = 0; i < correction.length(); i++) {
+            held |= correction.element(i) != 0;
+        }
+        pressHeld = held;
     }
 
     /** JointTargets took a value computed from {@code tick}. */
@@ -103,10 +113,11 @@ final class AnswerStages {
     /** One line: the latency and each stage in ms after tick S's publication, with its thread. */
     String describe(long latency, long appliedTick) {
         long published = base + shownTick * 1_000_000L;
-        return String.format(Locale.ROOT, "  %s S=%d latency %d ms: committed +%.3f ms (%s), reflex %s, targets %s,"
+        return String.format(Locale.ROOT, "  %s S=%d latency %d ms: committed +%.3f ms (%s), reflex %s%s, targets %s,"
                         + " applied at tick %d (deadline ~+%d ms); %d GC (%d ms); logger accept until the targets: max"
                         + " %.3f ms, %d over 0.1 ms", wall, shownTick, latency,
-                (shown - published) / 1e6, shownOn, stage(reflex, reflexOn, published), stage(targets, targetsOn,
+                (shown - published) / 1e6, shownOn, stage(reflex, reflexOn, published),
+                heldAtShown ? " (a correction already held at S)" : "", stage(targets, targetsOn,
                         published), appliedTick, appliedTick - shownTick, collections() - gcCount,
                 collectionMillis() - gcMillis, sinkMax / 1e6, sinkOver100us);
     }

@@ -158,7 +158,7 @@ final class StimulusLatencyRun {
             if (trace) {
                 NodeRef press = dataNamed(net, "reflex press");
                 if (press != null) {
-                    watches.add(net.controller().observe(press, (r, id, v) -> stages.reflexWrote(v.tick())));
+                    watches.add(net.controller().observe(press, (r, id, v) -> stages.reflexWrote(v)));
                 }
                 for (NodeRef ref : net.readDefinition(def -> SimBridge.nodesOf(def, JointTargets.class))) {
                     watches.add(net.controller().observe(ref, (r, id, v) -> stages.targetsWritten(v.tick())));

@@ -163,6 +163,11 @@ JNIEXPORT jstring JNICALL Java_org_fdnet_roq_sim_RoqNative_start(JNIEnv *env, jc
     return (*env)->NewStringUTF(env, warnings);
 }
 
+JNIEXPORT jint JNICALL Java_org_fdnet_roq_sim_RoqNative_fifoThisThread(JNIEnv *env, jclass cls, jint priority) {
+    (void)env; (void)cls;
+    return roq_thread_fifo(priority);
+}
+
 JNIEXPORT void JNICALL Java_org_fdnet_roq_sim_RoqNative_stop(JNIEnv *env, jclass cls, jlong handle) {
     (void)env; (void)cls;
     roq_rt_stop(&handle_of(handle)->rt);

@@ -80,6 +80,11 @@ static void *loop(void *arg) {
     return NULL;
 }
 
+int roq_thread_fifo(int priority) {
+    struct sched_param sp = {.sched_priority = priority};
+    return pthread_setschedparam(pthread_self(), SCHED_FIFO, &sp);
+}
+
 static void warn(char *warnings, int size, const char *what, int err) {
     size_t used = strlen(warnings);
     snprintf(warnings + used, (size_t)size - used, "%s%s (%s)", used ? ", " : "", what, strerror(err));

@@ -26,6 +26,9 @@ typedef struct {
 int roq_rt_start(roq_rt *rt, roq_model *model, roq_state *state, int priority, char *warnings, int warnings_size);
 /* Stops the thread and waits for it; gives back what start took. Harmless when not started. */
 void roq_rt_stop(roq_rt *rt);
+/* Puts the calling thread under SCHED_FIFO at priority: the Java threads on the path from a snapshot to a command
+   (the bridge, the network's workers), so a busy machine's other processes do not take their core. 0 or an errno. */
+int roq_thread_fifo(int priority);
 /* Counts one wake-up latency in the state's stage (histogram, maximum). */
 void roq_record_latency(roq_state *state, int64_t latency_ns);
 

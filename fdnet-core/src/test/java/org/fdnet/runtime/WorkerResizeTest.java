@@ -51,6 +51,29 @@ class WorkerResizeTest {
     }
 
     @Test
+    void shouldRunTheWorkerStartActionFirstOnEveryWorkerAlsoOnesStartedByAResize() throws Exception {
+        Set<String> started = java.util.concurrent.ConcurrentHashMap.newKeySet();
+        Set<Thread> before = workerThreads();
+        try (RuntimeNetwork net = RuntimeNetwork.start(ticking(), RuntimeOptions.defaults().workerThreads(2)
+                .workerStart(() -> {
+                    started.add(Thread.currentThread().getName());
+                    throw new IllegalStateException("a failing start action leaves the worker working");
+                }))) {
+            net.resizeWorkers(3);
+            long deadline = System.currentTimeMillis() + 5_000;
+            while (started.size() < 3 && System.currentTimeMillis() < deadline) {
+                Thread.sleep(10);
+            }
+            assertThat(started).as("each worker ran it, on itself")
+                    .isEqualTo(newWorkers(before).stream().map(Thread::getName).collect(Collectors.toSet()));
+            assertThat(started).hasSize(3);
+            double first = net.controller().value(LEVEL).asDouble();
+            Thread.sleep(300);
+            assertThat(net.controller().value(LEVEL).asDouble()).as("the workers fire on").isGreaterThan(first);
+        }
+    }
+
+    @Test
     void shouldRefuseAPoolOfNoneAndADrivenNetworksPool() throws Exception {
         try (RuntimeNetwork net = RuntimeNetwork.start(ticking(), RuntimeOptions.defaults().workerThreads(1))) {
             assertThatThrownBy(() -> net.resizeWorkers(0)).isInstanceOf(IllegalArgumentException.class)

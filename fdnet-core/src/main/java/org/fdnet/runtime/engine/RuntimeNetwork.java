@@ -96,7 +96,7 @@ public final class RuntimeNetwork implements AutoCloseable {
         this.flow = new Dataflow(events, driven);
         if (driven == null) {
             this.scheduler = new Scheduler(flow, options.workerThreads(), options.drainBudget(),
-                    options.inlineCallers());
+                    options.inlineCallers(), options.workerStart());
             this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
                 Thread t = new Thread(r, "fdnet-period");
                 t.setDaemon(true);
@@ -104,7 +104,7 @@ public final class RuntimeNetwork implements AutoCloseable {
             });
         } else {
             // simulated time: no threads of its own; the driver's thread runs every firing
-            this.scheduler = new Scheduler(flow, 0, options.drainBudget(), true);
+            this.scheduler = new Scheduler(flow, 0, options.drainBudget(), true, options.workerStart());
             this.timer = null;
         }
         flow.attach(scheduler);

@@ -16,6 +16,7 @@ public final class RuntimeOptions {
     private int workerThreads = Math.max(1, Runtime.getRuntime().availableProcessors());
     private int drainBudget = 256;
     private boolean inlineCallers = true;
+    private Runnable workerStart = () -> { };
     private ClassLoadingPolicy classLoading = ClassLoadingPolicy.builtInOnly();
     private EventClock clock = new EventClock();
     private DrivenClock driven;
@@ -60,6 +61,17 @@ public final class RuntimeOptions {
     public RuntimeOptions inlineCallers(boolean inline) {
         checkOpen();
         this.inlineCallers = inline;
+        return this;
+    }
+
+    /**
+     * Runs first on each worker thread the network starts: e.g. a real-time scheduling class for the workers of a
+     * network that answers a robot's sensors (a loaded machine's other processes took a worker's core for 7-13 ms in
+     * the middle of a tilt reflex's answer). It must return; what it throws is logged and the worker works on.
+     */
+    public RuntimeOptions workerStart(Runnable action) {
+        checkOpen();
+        this.workerStart = java.util.Objects.requireNonNull(action, "workerStart");
         return this;
     }
 
@@ -119,6 +131,10 @@ public final class RuntimeOptions {
 
     boolean inlineCallers() {
         return inlineCallers;
+    }
+
+    Runnable workerStart() {
+        return workerStart;
     }
 
     ClassLoadingPolicy classLoading() {

@@ -39,6 +39,7 @@ final class Scheduler implements AutoCloseable {
     private final ThreadLocal<LocalRun> local = ThreadLocal.withInitial(LocalRun::new);
     private final int budget;
     private final boolean inlineCallers;
+    private final Runnable workerStart;
     private volatile boolean running = true;
 
     /** One worker thread; {@code retired} asks it to stop after the drain it is in. */
@@ -52,10 +53,11 @@ final class Scheduler implements AutoCloseable {
         boolean draining;
     }
 
-    Scheduler(Dataflow flow, int threads, int budget, boolean inlineCallers) {
+    Scheduler(Dataflow flow, int threads, int budget, boolean inlineCallers, Runnable workerStart) {
         this.flow = flow;
         this.budget = budget;
         this.inlineCallers = inlineCallers;
+        this.workerStart = workerStart;
         this.driven = threads == 0;
         if (!driven) {
             resize(threads);
@@ -133,6 +135,11 @@ final class Scheduler implements AutoCloseable {
     }
 
     private void work(Worker self) {
+        try {
+            workerStart.run();
+        } catch (RuntimeException e) {
+            LOG.warn("worker {}: its start action failed; it works on without it", Thread.currentThread().getName(), e);
+        }
         LocalRun l = local.get();
         idle.incrementAndGet();
         while (running && !self.retired) {

@@ -12,6 +12,7 @@ import org.fdnet.netinfo.NodeRef;
 import org.fdnet.roq.node.JointTargets;
 import org.fdnet.roq.node.RoqSensor;
 import org.fdnet.roq.sim.JointCommand;
+import org.fdnet.roq.sim.RealTimeThreads;
 import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
@@ -38,7 +39,10 @@ import org.slf4j.LoggerFactory;
  *   read the snapshot → feed the sensors → {@code network.advanceTo(start + tick ms)}. Nothing else runs, so a
  *   run is reproducible.</li>
  *   <li><b>Real time</b> ({@link #realTime}): a thread of its own polls the loop's snapshot (a seqlock read,
- *   no JNI) and feeds each new one; the simulator's 1 kHz loop never waits for it.</li>
+ *   no JNI) and feeds each new one; the simulator's 1 kHz loop never waits for it. The thread runs under
+ *   SCHED_FIFO just below the loop when the system allows ({@link RealTimeThreads}): the network's event-driven
+ *   Relations fire on it, and on a loaded machine an ordinary thread waited up to 2.5 ms for its core. Give the
+ *   network's workers the same with {@code RuntimeOptions.workerStart(RealTimeThreads::promoteCurrentThread)}.</li>
  * </ul>
  *
  * <p>Commands are observed, not polled. In real time every value JointTargets takes that differs from the last one
@@ -131,6 +135,7 @@ public final class SimBridge implements AutoCloseable {
     }
 
     private void poll() {
+        RealTimeThreads.promoteCurrentThread();
         long lastTick = -1;
         while (running) {
             long tick = simulator.read(snapshot);

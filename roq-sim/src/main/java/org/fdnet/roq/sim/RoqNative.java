@@ -34,6 +34,9 @@ final class RoqNative {
     /** Starts the real-time thread; returns warnings (what could not be obtained), empty when none. */
     static native String start(long handle, int priority);
 
+    /** Puts the calling thread under SCHED_FIFO at {@code priority}; 0, or the errno (EPERM without the right). */
+    static native int fifoThisThread(int priority);
+
     /** Stops the real-time thread and waits for it. */
     static native void stop(long handle);
 

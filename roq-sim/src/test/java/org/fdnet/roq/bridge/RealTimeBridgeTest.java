@@ -10,12 +10,16 @@ import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.roq.sim.SimMode;
+import org.fdnet.roq.sim.ThreadScheduling;
 import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.fdnet.runtime.engine.RuntimeOptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
-/** networks/roq-stand.fdn on the wall clock, joined to the real-time simulator by the bridge's own thread. */
+/**
+ * networks/roq-stand.fdn on the wall clock, joined to the real-time simulator by the bridge's own thread, which runs
+ * under SCHED_FIFO when the system allows (as root).
+ */
 @Timeout(60)
 class RealTimeBridgeTest {
     @Test
@@ -33,6 +37,8 @@ class RealTimeBridgeTest {
             } while (Math.abs(s.groundTruthBodyPosition(2) - 0.27) > 0.015 && System.nanoTime() < deadline);
             assertThat(s.groundTruthBodyPosition(2)).as("body height").isCloseTo(0.27, offset(0.015));
             assertThat(bridge.cycles()).isPositive();
+            assertThat(ThreadScheduling.ofThreadNamed("roq-bridge").fifo())
+                    .as("the bridge's thread under SCHED_FIFO, as root").isEqualTo(ThreadScheduling.runningAsRoot());
             assertThat(net.controller().value(NodeRef.parse("attitude", "main")).length()).isEqualTo(2);
             assertThat(net.controller().value(NodeRef.parse("fallen", "main")).asBoolean()).isFalse();
         }

@@ -2,9 +2,6 @@ package org.fdnet.roq.sim;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.IOException;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -27,21 +24,11 @@ class RealTimeRateTest {
             double hertz = (tick1 - tick0) / ((t1 - t0) / 1e9);
             assertThat(hertz).as("ticks per wall second over 5 s (%d overruns, worst %d µs)", stats.overruns(),
                     stats.maxOverrunNanos() / 1000).isBetween(990.0, 1010.0);
-            if (runningAsRoot()) {
+            if (ThreadScheduling.runningAsRoot()) {
                 assertThat(stats.schedFifo()).as("SCHED_FIFO obtained as root").isTrue();
                 assertThat(stats.memoryLocked()).as("mlockall obtained as root").isTrue();
                 assertThat(stats.dmaLatencyHeld()).as("/dev/cpu_dma_latency held as root").isTrue();
             }
         }
-    }
-
-    /** The effective uid from /proc/self/status (Linux; roq-sim is Linux-only). */
-    private static boolean runningAsRoot() throws IOException {
-        for (String line : Files.readAllLines(Path.of("/proc/self/status"))) {
-            if (line.startsWith("Uid:")) {
-                return line.split("\\s+")[2].equals("0");
-            }
-        }
-        throw new IOException("/proc/self/status has no Uid line");
     }
 }

@@ -41,8 +41,16 @@ import picocli.CommandLine.Option;
                 + " Reflex unloaded; heading: drift off the course line with and without module Course.")
 public final class BenchRoqCommand implements Callable<Integer> {
     @Option(names = "--seconds", defaultValue = "60",
-            description = "seconds for each measurement: simulated in (a), wall in (b) (default 60)")
+            description = "(a) simulated seconds for each measurement (default 60)")
     int seconds;
+
+    @Option(names = "--pushes", defaultValue = "100",
+            description = "(b) pushes answered, reflex loaded and again unloaded (default 100; at most 4 wall s each)")
+    int pushes;
+
+    @Option(names = "--echo-seconds", defaultValue = "30",
+            description = "(b) wall seconds of the bare Java echo baseline (default 30: ~30,000 snapshots)")
+    int echoSeconds;
 
     @Option(names = "--part", defaultValue = "ab",
             description = "a, b or ab (default ab); push: largest survivable push with and without Balance and Reflex;"
@@ -58,11 +66,15 @@ public final class BenchRoqCommand implements Callable<Integer> {
     double[] offsets;
 
     @Option(names = "--drops", defaultValue = "100",
-            description = "(b) sole-force drops, one short run each (default 100, about 2 s each)")
+            description = "(b) sole-force drops, one short run each (default 100, about 1.2 s each)")
     int drops;
 
     @Option(names = "--no-logger", description = "(b) without recording (default: record with a logger started here)")
     boolean noLogger;
+
+    @Option(names = "--trace", description = "(b) one line per answer: when each stage ran after the stimulus's snapshot,"
+            + " on which thread, and the garbage collections in between")
+    boolean trace;
 
     @Option(names = "--seeds", split = ",", defaultValue = "12,2004,13",
             description = "(heading) rubble seeds (default 12,2004,13)")
@@ -93,6 +105,14 @@ public final class BenchRoqCommand implements Callable<Integer> {
         }
         if (drops < 1) {
             System.err.println("fdnet bench roq: --drops must be at least 1, was " + drops);
+            return 2;
+        }
+        if (pushes < 1) {
+            System.err.println("fdnet bench roq: --pushes must be at least 1, was " + pushes);
+            return 2;
+        }
+        if (echoSeconds < 1) {
+            System.err.println("fdnet bench roq: --echo-seconds must be at least 1, was " + echoSeconds);
             return 2;
         }
         if (!part.matches("a|b|ab|push|heading")) {
@@ -131,7 +151,7 @@ public final class BenchRoqCommand implements Callable<Integer> {
             }
             if (part.contains("b")) {
                 return new ReflexLatencyBench(CourseLoader.resolve(reflexCourse), load(reflexNetwork), reflexNetwork,
-                        seconds, drops, !noLogger).run();
+                        echoSeconds, pushes, drops, !noLogger, trace).run();
             }
             return 0;
         } catch (CourseFormatException | NetworkFileException e) {

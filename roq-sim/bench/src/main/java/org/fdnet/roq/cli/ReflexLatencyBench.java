@@ -1,5 +1,8 @@
 package org.fdnet.roq.cli;
 
+import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.locks.LockSupport;
@@ -11,6 +14,7 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.JointCommand;
 import org.fdnet.roq.sim.LoopStatistics;
+import org.fdnet.roq.sim.RealTimeThreads;
 import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
@@ -35,25 +39,30 @@ final class ReflexLatencyBench {
     private final Course course;
     private final NetworkInfo definition;
     private final Path network;
-    private final int seconds;
+    private final int echoSeconds;
+    private final int pushes;
     private final int drops;
     private final boolean record;
+    private final boolean trace;
 
-    ReflexLatencyBench(Course course, NetworkInfo definition, Path network, int seconds, int drops, boolean record) {
+    ReflexLatencyBench(Course course, NetworkInfo definition, Path network, int echoSeconds, int pushes, int drops,
+                       boolean record, boolean trace) {
+        this.trace = trace;
         this.course = course;
         this.definition = definition;
         this.network = network;
-        this.seconds = seconds;
+        this.echoSeconds = echoSeconds;
+        this.pushes = pushes;
         this.drops = drops;
         this.record = record;
     }
 
     int run() throws Exception {
-        System.out.printf(Locale.ROOT, "fdnet bench roq (b): snapshot-to-applied-command latency in real time, %d wall s"
-                + " each, course %s, network %s; pushes of %.0f N for %.1f s towards the swinging leg's corner; %d"
-                + " sole-force drops (the cell under the front-left foot breaks while hind-right swings)%n",
-                seconds, course.name(), network, StimulusLatencyRun.PUSH_NEWTONS, StimulusLatencyRun.PUSH_SECONDS,
-                drops);
+        System.out.printf(Locale.ROOT, "fdnet bench roq (b): snapshot-to-applied-command latency in real time, course %s,"
+                + " network %s; %d pushes of %.0f N for %.1f s towards the swinging leg's corner (reflex loaded, then"
+                + " unloaded); %d sole-force drops (the cell under the front-left foot breaks while hind-right swings);"
+                + " echo %d s; load average at start %s%n", course.name(), network, pushes,
+                StimulusLatencyRun.PUSH_NEWTONS, StimulusLatencyRun.PUSH_SECONDS, drops, echoSeconds, loadAverage());
         LatencySample echo = echoAlone();
         System.out.printf(Locale.ROOT, "baseline: bare Java echo, every snapshot: %s commands%n", echo.summary());
         InProcessLogger logger = null;
@@ -70,15 +79,17 @@ final class ReflexLatencyBench {
             LoggerClient client = logger == null ? null
                     : new LoggerClient(LoggerClientSettings.parseAddress("127.0.0.1:" + logger.receiverPort(),
                             "fdnet bench roq " + definition.name()));
-            StimulusLatencyRun reflexRun = new StimulusLatencyRun(course, definition, true, seconds, drops, client);
-            StimulusLatencyRun periodicRun = new StimulusLatencyRun(course, definition, false, seconds, drops, client);
+            StimulusLatencyRun reflexRun = new StimulusLatencyRun(course, definition, true, pushes, drops, client, trace);
+            StimulusLatencyRun periodicRun = new StimulusLatencyRun(course, definition, false, pushes, drops, client, trace);
             StimulusLatencyRun.Outcome reflex = reflexRun.run(StimulusLatencyRun.Kind.PUSH);
             print("tilt reflex, pushes, " + reflexRun.describe(), reflex);
             StimulusLatencyRun.Outcome reflexDrops = reflexRun.run(StimulusLatencyRun.Kind.CELL_BREAK);
             print("tilt reflex, sole-force drops, " + reflexRun.describe(), reflexDrops);
             StimulusLatencyRun.Outcome periodic = periodicRun.run(StimulusLatencyRun.Kind.PUSH);
             print("periodic path, pushes, " + periodicRun.describe(), periodic);
-            reflexDrops.latencies().addAllTo(reflex.latencies());
+            LatencySample r = new LatencySample();
+            reflex.latencies().addAllTo(r);
+            reflexDrops.latencies().addAllTo(r);
             String recorded = "not recorded";
             if (client != null) {
                 client.close();
@@ -86,13 +97,13 @@ final class ReflexLatencyBench {
                 recorded = String.format(Locale.ROOT, "logger recording: %,d of %,d events committed, %,d lost",
                         st.acked(), st.accepted(), st.lost());
             }
-            LatencySample r = reflex.latencies();
             String verdict = r.count() == 0 ? "NOT met (no command answered a stimulus)"
                     : r.percentile(99) <= 2 ? "met" : "NOT met";
-            System.out.printf(Locale.ROOT, "tilt reflex (pushes and drops) p99 %s (target ≤ 2 ms: %s; %s); periodic path p99 %s; echo"
-                            + " baseline p99 %d ms%n", r.count() == 0 ? "-" : r.percentile(99) + " ms", verdict, recorded,
+            System.out.printf(Locale.ROOT, "tilt reflex p99: pushes %s, drops %s, both together %s over %d (target ≤ 2 ms:"
+                            + " %s; %s); periodic path p99 %s; echo baseline p99 %d ms; load average at end %s%n",
+                    p99(reflex.latencies()), p99(reflexDrops.latencies()), p99(r), r.count(), verdict, recorded,
                     periodic.latencies().count() == 0 ? "- (no command computed from the stimulus)"
-                            : periodic.latencies().percentile(99) + " ms", echo.percentile(99));
+                            : p99(periodic.latencies()), echo.percentile(99), loadAverage());
         } finally {
             if (logger != null) {
                 logger.close();
@@ -101,13 +112,48 @@ final class ReflexLatencyBench {
         return 0;
     }
 
+    private static String p99(LatencySample s) {
+        return s.count() == 0 ? "-" : s.percentile(99) + " ms";
+    }
+
+    /** The 1, 5 and 15 minute load averages ({@code /proc/loadavg}), or the JVM's 1 minute figure elsewhere. */
+    static String loadAverage() {
+        try {
+            String[] f = Files.readString(Path.of("/proc/loadavg")).trim().split("\\s+");
+            return f[0] + " " + f[1] + " " + f[2];
+        } catch (IOException | RuntimeException e) {
+            return String.format(Locale.ROOT, "%.2f", ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
+        }
+    }
+
     private static void print(String what, StimulusLatencyRun.Outcome o) {
         System.out.printf(Locale.ROOT, "%s: %d stimuli, %d shown beyond the thresholds, %d answered by a command: %s%s%n",
                 what, o.stimuli(), o.shown(), o.latencies().count(), o.latencies().summary(),
                 o.fell() ? " (RoQ fell: pushes stopped)" : "");
+        o.traces().forEach(System.out::println);
     }
 
-    private LatencySample echoAlone() {
+    /** On a thread of its own, promoted like the bridge's ({@link RealTimeThreads}), so the baseline is like for like. */
+    private LatencySample echoAlone() throws InterruptedException {
+        LatencySample[] sample = new LatencySample[1];
+        RuntimeException[] failure = new RuntimeException[1];
+        Thread echo = new Thread(() -> {
+            try {
+                RealTimeThreads.promoteCurrentThread();
+                sample[0] = echoHere();
+            } catch (RuntimeException e) {
+                failure[0] = e;
+            }
+        }, "roq-echo");
+        echo.start();
+        echo.join();
+        if (failure[0] != null) {
+            throw new IllegalStateException("the echo baseline failed: " + failure[0].getMessage(), failure[0]);
+        }
+        return sample[0];
+    }
+
+    private LatencySample echoHere() {
         LatencySample sample = new LatencySample();
         long[] applied = new long[64];
         long[] source = new long[64];
@@ -118,7 +164,7 @@ final class ReflexLatencyBench {
             for (int j = 0; j < RoqGeometry.JOINTS; j++) {
                 command.target(j, s.jointAngle(j));
             }
-            long end = System.nanoTime() + seconds * 1_000_000_000L;
+            long end = System.nanoTime() + echoSeconds * 1_000_000_000L;
             long last = -1;
             long seen = sim.appliedCommands(0, applied, source);
             while (System.nanoTime() < end) {

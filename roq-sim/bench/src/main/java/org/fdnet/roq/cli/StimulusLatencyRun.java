@@ -4,18 +4,21 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.atomic.AtomicLong;
+import org.fdnet.event.NetworkEvent;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.roq.bridge.SimBridge;
+import org.fdnet.roq.node.JointTargets;
 import org.fdnet.roq.node.RoqSensor;
 import org.fdnet.roq.node.TiltReflex;
 import org.fdnet.roq.sim.CellBreak;
 import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.FragileCell;
 import org.fdnet.roq.sim.Push;
+import org.fdnet.roq.sim.RealTimeThreads;
 import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
@@ -44,8 +47,12 @@ final class StimulusLatencyRun {
     private static final double[] CORNER_DEGREES = {45, -45, 135, 225}; // fl, fr, hl, hr
     private static final int FRONT_LEFT = 0;
     private static final int HIND_RIGHT = 3;
+    /** Wall time allowed a push, start to settled: the run ends there even if some pushes went unanswered. */
+    private static final int SECONDS_A_PUSH = 4;
+    /** After an answer, before the next push: the reflex holds 0.3 s and fades over 0.3 s more. */
+    private static final long SETTLE_MILLIS = 1000;
 
-    record Outcome(int stimuli, int shown, LatencySample latencies, boolean fell) {
+    record Outcome(int stimuli, int shown, LatencySample latencies, boolean fell, List<String> traces) {
     }
 
     /** Which stimulus a run applies. */
@@ -62,9 +69,11 @@ final class StimulusLatencyRun {
     private final Course course;
     private final NetworkInfo definition;
     private final boolean reflexLoaded;
-    private final int seconds;
+    private final int pushes;
     private final int drops;
     private final LoggerClient client;
+    private final boolean trace;
+    private final AnswerStages stages = new AnswerStages();
     private final double tilt;
     private final double rate;
     private final String reflexModule;
@@ -74,12 +83,13 @@ final class StimulusLatencyRun {
     private final long[] sourceTicks = new long[64];
     private long seen;
 
-    StimulusLatencyRun(Course course, NetworkInfo definition, boolean reflexLoaded, int seconds, int drops,
-                       LoggerClient client) {
+    StimulusLatencyRun(Course course, NetworkInfo definition, boolean reflexLoaded, int pushes, int drops,
+                       LoggerClient client, boolean trace) {
         this.course = course;
+        this.trace = trace;
         this.definition = definition;
         this.reflexLoaded = reflexLoaded;
-        this.seconds = seconds;
+        this.pushes = pushes;
         this.drops = drops;
         this.client = client;
         NodeRef reflex = SimBridge.nodesOf(definition, TiltReflex.class).stream().findFirst().orElseThrow(() ->
@@ -93,14 +103,16 @@ final class StimulusLatencyRun {
 
     Outcome run(Kind kind) throws Exception {
         if (kind == Kind.PUSH) {
-            return run(course, Kind.PUSH, seconds);
+            return run(course, Kind.PUSH, pushes * SECONDS_A_PUSH);
         }
-        Outcome sum = new Outcome(0, 0, new LatencySample(), false);
+        Outcome sum = new Outcome(0, 0, new LatencySample(), false, new ArrayList<>());
         Course cells = cellsUnderTheFeet(course);
         for (int i = 0; i < drops; i++) {
             Outcome o = run(cells, Kind.CELL_BREAK, 4);
             o.latencies().addAllTo(sum.latencies());
-            sum = new Outcome(sum.stimuli() + o.stimuli(), sum.shown() + o.shown(), sum.latencies(), sum.fell() || o.fell());
+            sum.traces().addAll(o.traces());
+            sum = new Outcome(sum.stimuli() + o.stimuli(), sum.shown() + o.shown(), sum.latencies(), sum.fell() || o.fell(),
+                    sum.traces());
         }
         return sum;
     }
@@ -118,11 +130,15 @@ final class StimulusLatencyRun {
     }
 
     private Outcome run(Course on, Kind kind, int runSeconds) throws Exception {
-        RuntimeOptions options = RuntimeOptions.defaults();
+        RuntimeOptions options = RuntimeOptions.defaults().workerStart(RealTimeThreads::promoteCurrentThread);
         if (client != null) {
-            options = options.sink(client);
+            // Every event goes to the logger, but closing this run's network does not wait for the logger to commit
+            // them (a flush took ~1.9 s of each 3 s drop run): the bench closes the client at the end and reports
+            // how many of the accepted events the logger committed.
+            options = options.sink(trace ? this::timedAccept : client::accept);
         }
         LatencySample sample = new LatencySample();
+        List<String> traces = new ArrayList<>();
         int stimuli = 0;
         int shown = 0;
         boolean fell = false;
@@ -139,6 +155,15 @@ final class StimulusLatencyRun {
             for (NodeRef ref : sensors(net, "imu_gyro")) {
                 watches.add(net.controller().observe(ref, (r, id, v) -> check(v, rate)));
             }
+            if (trace) {
+                NodeRef press = dataNamed(net, "reflex press");
+                if (press != null) {
+                    watches.add(net.controller().observe(press, (r, id, v) -> stages.reflexWrote(v)));
+                }
+                for (NodeRef ref : net.readDefinition(def -> SimBridge.nodesOf(def, JointTargets.class))) {
+                    watches.add(net.controller().observe(ref, (r, id, v) -> stages.targetsWritten(v.tick())));
+                }
+            }
             NodeRef phase = dataNamed(net, "gait phase");
             NodeRef fallen = dataNamed(net, "fallen");
             SensorSnapshot s = new SensorSnapshot();
@@ -147,13 +172,15 @@ final class StimulusLatencyRun {
                 Thread.sleep(1500); // stand up and start walking
             }
             seen = sim.appliedCommands(0, appliedTicks, sourceTicks);
-            while (System.nanoTime() < end && !(fell = isTrue(net, fallen))) {
+            BridgeAllocation allocation = trace && kind == Kind.PUSH ? BridgeAllocation.start(bridge) : null;
+            while (System.nanoTime() < end && sample.count() < pushes && !(fell = isTrue(net, fallen))) {
                 int leg = legInTheAir(net, phase, end);
                 if (leg < 0 || (kind == Kind.CELL_BREAK && leg != HIND_RIGHT)) {
                     continue;
                 }
                 long first = sim.read(s) + 3;
                 shownAt.set(-1);
+                stages.arm();
                 armedAfter.set(first);
                 sim.stimulate(kind == Kind.PUSH
                         ? new Push(first * 0.001, PUSH_SECONDS, PUSH_NEWTONS, CORNER_DEGREES[leg])
@@ -166,24 +193,38 @@ final class StimulusLatencyRun {
                 }
                 if (latency >= 0) {
                     sample.add(latency);
+                    if (trace) {
+                        traces.add(stages.describe(latency, shownAt.get() + latency - 1));
+                    }
                 }
                 if (kind == Kind.CELL_BREAK) {
                     break; // one break a run: the cell is gone
                 }
-                Thread.sleep(2000); // let the walk settle before the next push
+                Thread.sleep(SETTLE_MILLIS); // let the walk settle before the next push
+            }
+            if (allocation != null) {
+                traces.add(allocation.describe());
             }
             for (AutoCloseable w : watches) {
                 w.close();
             }
         }
-        return new Outcome(stimuli, shown, sample, fell);
+        return new Outcome(stimuli, shown, sample, fell, traces);
+    }
+
+    private void timedAccept(NetworkEvent event) {
+        long start = System.nanoTime();
+        client.accept(event);
+        stages.sinkTook(System.nanoTime() - start);
     }
 
     /** A reading beyond {@code limit} (in roll or pitch, the first two elements) after the armed push began. */
     private void check(Value v, double limit) {
+        stages.sensorCommitted(v.tick());
         if (v.tick() > armedAfter.get() && shownAt.get() < 0 && v.length() >= 2
-                && (Math.abs(v.element(0)) > limit || Math.abs(v.element(1)) > limit)) {
-            shownAt.compareAndSet(-1, v.tick());
+                && (Math.abs(v.element(0)) > limit || Math.abs(v.element(1)) > limit)
+                && shownAt.compareAndSet(-1, v.tick())) {
+            stages.shown(v.tick());
         }
     }
 

@@ -23,7 +23,7 @@ public enum LoggerSetting {
     WRITER_MAX_BATCH_BYTES("writer.maxBatchMegabytes", Panel.WRITER, "64", "... and up to this many cached MB"),
     WRITER_CONNECTIONS("writer.connections", Panel.WRITER, "2",
             "under backlog, COPY the next batch on another connection while one commits (1: one batch at a time)"),
-    WRITER_BACKEND_NICENESS("writer.backendNiceness", Panel.WRITER, "10",
+    WRITER_BACKEND_NICENESS("writer.backendNiceness", Panel.WRITER, "0",
             "the nice value of the writer's PostgreSQL backends when the database runs on this host, so viewers' queries"
             + " and the network go first (0: leave them)"),
     WRITER_RECONNECT("writer.reconnect", Panel.WRITER, "true", "reconnect to a lost database"),

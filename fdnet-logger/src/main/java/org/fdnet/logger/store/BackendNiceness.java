@@ -13,10 +13,11 @@ import org.slf4j.LoggerFactory;
 
 /**
  * Lowers the CPU priority of the PostgreSQL backends that COPY the writer's batches, when the database runs on
- * this host ({@code writer.backendNiceness}). While the writer drains a backlog, its backends are the largest
- * consumers of CPU; at an equal nice value a viewer's query (and the network the logger records) waits for their
- * time slices on a loaded machine. At nice 10 the scheduler lets the waiting thread run first; when nothing
- * else wants the CPU the backends still get all of it, so the writer is no slower on a quiet machine.
+ * this host ({@code writer.backendNiceness}; 0, off, by default). While the writer drains a backlog its backends
+ * are the largest consumers of CPU; on a machine where the database shares the cores with more important work (the
+ * network the logger records) a higher nice value makes them step aside. The price, measured in {@code bench
+ * logger}: the backends are the logger's bottleneck, and at nice 10 the producer and the receivers took their CPU
+ * and the sustained rate halved — hence off by default.
  *
  * <p>How: {@code pg_backend_pid()} of the writer's connection, then {@code renice} (PostgreSQL has no setting for
  * it). Only for a server reached over loopback or a Unix socket: a backend on another host is not ours to touch.

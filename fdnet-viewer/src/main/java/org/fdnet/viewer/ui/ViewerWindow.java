@@ -64,6 +64,7 @@ public final class ViewerWindow extends JFrame {
     private final JTextField replayTo = new JTextField("60", 5);
     private final JToggleButton pause = new JToggleButton("Pause");
     private final AtomicReference<Replay> replay = new AtomicReference<>();
+    private final HistoryLoader historyLoader = new HistoryLoader();
 
     private ViewerWindow(LoggerConnection connection, PlotData live) {
         super("FDNet Network State Viewer — logger " + connection.address());
@@ -306,18 +307,16 @@ public final class ViewerWindow extends JFrame {
             status.setText(e.getMessage());
             return;
         }
-        try {
-            PlotData history = new PlotData();
-            copyTracking(live, history);
-            int n = connection.loadHistory(live.trackedSources(), range[0], range[1], history);
+        PlotData history = new PlotData();
+        copyTracking(live, history);
+        status.setText("loading history " + rangeText.trim() + " from the logger ...");
+        historyLoader.load(connection, live.trackedSources(), range[0], range[1], history, n -> {
             PlotPanel plot = new PlotPanel(history);
             plot.showRange(range[0], range[1]);
             showPlot(plot);
             status.setText(String.format("history %s: %,d values from the logger (cache + database); press Live to return",
                     rangeText.trim(), n));
-        } catch (IOException e) {
-            status.setText("history failed: " + e.getMessage());
-        }
+        }, e -> status.setText("history failed: " + e.getMessage()));
     }
 
     private static void copyTracking(PlotData from, PlotData to) {
@@ -413,6 +412,7 @@ public final class ViewerWindow extends JFrame {
         if (r != null) {
             r.stop();
         }
+        historyLoader.close();
         connection.close();
         super.dispose();
     }

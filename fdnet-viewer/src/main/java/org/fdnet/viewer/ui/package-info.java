@@ -5,7 +5,7 @@
  *
  * <pre>
  *   LoggerConnection ─▶ PlotData (live) ─▶ PlotPanel ◀─ wheel zoom, drag pan, space pause, cursor read-out
- *   history button  ─▶ PlotData (range) ─▶ PlotPanel (paused on the range)
+ *   history button ─HistoryLoader (own thread)─▶ PlotData (range) ─event thread─▶ PlotPanel (paused on the range)
  *   replay bar ─ReplayLoader─▶ Replay ─▶ PlotData (replayed) ─▶ PlotPanel
  *   visible window of the shown PlotPanel ─▶ CsvExport ─▶ file.csv
  * </pre>

@@ -24,6 +24,7 @@ import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.CourseFormatException;
 import org.fdnet.roq.sim.CourseLoader;
 import org.fdnet.roq.sim.LoopStatistics;
+import org.fdnet.roq.sim.RealTimeThreads;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.roq.sim.SimMode;
@@ -193,7 +194,8 @@ public final class DemoCommand implements Callable<Integer> {
         String sensedTrack = null;
         RoqDemoWindow window = null;
         try (RoqSimulator sim = RoqSimulator.open(c, simOptions);
-             RuntimeNetwork net = RuntimeNetwork.start(definition, RuntimeOptions.defaults().sink(meter));
+             RuntimeNetwork net = RuntimeNetwork.start(definition, RuntimeOptions.defaults().sink(meter)
+                     .workerStart(RealTimeThreads::promoteCurrentThread));
              SimBridge bridge = SimBridge.realTime(net, sim);
              ControlPublication published = publishControl(net, definition)) {
             meter.lookUpCounters(net);

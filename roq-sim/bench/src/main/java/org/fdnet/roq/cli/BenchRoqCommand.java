@@ -32,13 +32,15 @@ import picocli.CommandLine.Option;
  *   for the tilt reflex and for the periodic path, the network recording with a logger, beside a bare Java echo of
  *   each snapshot's tick into the command slot.</li>
  * </ol>
- * {@code --part push}: {@link PushSurvivalBench}; {@code --part heading}: {@link HeadingDriftBench}.
+ * {@code --part push}: {@link PushSurvivalBench}; {@code --part heading}: {@link HeadingDriftBench};
+ * {@code --part breakthroughs}: {@link BreakthroughSweep}.
  */
 @Command(name = "roq", mixinStandardHelpOptions = true,
         description = "(a) stepped speed of a RoQ network + simulator beside the simulator alone; (b) real-time reflex"
                 + " latency from pushes, stimulus snapshot to applied command, tilt reflex and periodic path, beside a"
                 + " bare Java echo (same run); push: largest survivable push with the full network beside Balance and"
-                + " Reflex unloaded; heading: drift off the course line with and without module Course.")
+                + " Reflex unloaded; heading: drift off the course line with and without module Course; breakthroughs:"
+                + " fragile cells broken under a loaded foot over many noise seeds, beside module Probing unloaded.")
 public final class BenchRoqCommand implements Callable<Integer> {
     @Option(names = "--seconds", defaultValue = "60",
             description = "(a) simulated seconds for each measurement (default 60)")
@@ -54,7 +56,8 @@ public final class BenchRoqCommand implements Callable<Integer> {
 
     @Option(names = "--part", defaultValue = "ab",
             description = "a, b or ab (default ab); push: largest survivable push with and without Balance and Reflex;"
-                    + " heading: drift off the course line with and without module Course")
+                    + " heading: drift off the course line with and without module Course; breakthroughs: cells broken"
+                    + " under a loaded foot over --noise seeds, with and without module Probing")
     String part;
 
     @Option(names = "--directions", split = ",", defaultValue = "0,45,90,135,180,225,270,315",
@@ -83,6 +86,14 @@ public final class BenchRoqCommand implements Callable<Integer> {
     @Option(names = "--heading-seconds", defaultValue = "70",
             description = "(heading) simulated seconds per run (default 70, ~2 m of rubble)")
     int headingSeconds;
+
+    @Option(names = "--noise", defaultValue = "1-24",
+            description = "(breakthroughs) sensor-noise seeds: a range FROM-TO or a list (default 1-24)")
+    String noise;
+
+    @Option(names = "--sweep-seconds", defaultValue = "100",
+            description = "(breakthroughs) simulated seconds per run (default 100, the demo's)")
+    int sweepSeconds;
 
     @Option(names = "--course", defaultValue = "crossing", description = "course (default crossing, the demo's)")
     String course;
@@ -115,8 +126,19 @@ public final class BenchRoqCommand implements Callable<Integer> {
             System.err.println("fdnet bench roq: --echo-seconds must be at least 1, was " + echoSeconds);
             return 2;
         }
-        if (!part.matches("a|b|ab|push|heading")) {
-            System.err.println("fdnet bench roq: --part must be a, b, ab, push or heading, was " + part);
+        if (!part.matches("a|b|ab|push|heading|breakthroughs")) {
+            System.err.println("fdnet bench roq: --part must be a, b, ab, push, heading or breakthroughs, was " + part);
+            return 2;
+        }
+        long[] noises = NoiseSeeds.parse(noise);
+        if (noises.length == 0) {
+            System.err.println("fdnet bench roq: --noise must be a range FROM-TO (FROM <= TO, at most 1000 seeds) or a"
+                    + " comma-separated list of seeds, was " + noise);
+            return 2;
+        }
+        if (sweepSeconds < 10) {
+            System.err.println("fdnet bench roq: --sweep-seconds must be at least 10 (two crawl cycles), was "
+                    + sweepSeconds);
             return 2;
         }
         for (double o : offsets) {
@@ -140,6 +162,10 @@ public final class BenchRoqCommand implements Callable<Integer> {
             if (part.equals("push")) {
                 new PushSurvivalBench(load(reflexNetwork), CourseLoader.resolve(reflexCourse), 7, directions, offsets, 5)
                         .run();
+                return 0;
+            }
+            if (part.equals("breakthroughs")) {
+                new BreakthroughSweep(load(network), CourseLoader.resolve(course), noises, sweepSeconds).run();
                 return 0;
             }
             if (part.equals("heading")) {

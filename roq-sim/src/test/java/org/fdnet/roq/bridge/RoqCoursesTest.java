@@ -207,8 +207,8 @@ class RoqCoursesTest {
     @Test
     void shouldStayCloserToItsCourseLineWithModuleCourseThanWithout() throws Exception {
         // measured over 3.0-3.5 m on these eight noise seeds: off the line 0.13-0.30 m with Course (mean 0.23), 0.18-0.91
-        // m without (mean 0.48): 0.48x. Run by run Course did worse on three of them: the crawl's sideways slip,
-        // which Course does not sense, is as large as the heading's drift over 3 m.
+        // m without (mean 0.48): 0.48x. Run by run the comparison failed on three of them (Course did worse than none
+        // on two): the crawl's sideways slip, which Course does not sense, is as large as the heading's drift over 3 m.
         SoftAssertions soft = new SoftAssertions();
         double held = 0;
         double unheld = 0;

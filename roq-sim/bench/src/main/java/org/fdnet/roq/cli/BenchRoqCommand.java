@@ -84,12 +84,16 @@ public final class BenchRoqCommand implements Callable<Integer> {
     long[] seeds;
 
     @Option(names = "--heading-seconds", defaultValue = "70",
-            description = "(heading) simulated seconds per run (default 70, ~2 m of rubble)")
+            description = "(heading) simulated seconds per run (default 70, ~3 m of rubble)")
     int headingSeconds;
 
-    @Option(names = "--noise", defaultValue = "1-24",
-            description = "(breakthroughs) sensor-noise seeds: a range FROM-TO or a list (default 1-24)")
+    @Option(names = "--noise",
+            description = "(breakthroughs, heading) sensor-noise seeds: a range FROM-TO or a list (default: breakthroughs"
+                    + " 1-24; heading " + HEADING_NOISE + ", RoqCoursesTest's)")
     String noise;
+
+    /** The heading runs' default noise seeds: RoqCoursesTest's eight. */
+    static final String HEADING_NOISE = "5,105,205,305,405,505,605,705";
 
     @Option(names = "--sweep-seconds", defaultValue = "100",
             description = "(breakthroughs) simulated seconds per run (default 100, the demo's)")
@@ -130,10 +134,11 @@ public final class BenchRoqCommand implements Callable<Integer> {
             System.err.println("fdnet bench roq: --part must be a, b, ab, push, heading or breakthroughs, was " + part);
             return 2;
         }
-        long[] noises = NoiseSeeds.parse(noise);
+        String noiseText = noise != null ? noise : part.equals("heading") ? HEADING_NOISE : "1-24";
+        long[] noises = NoiseSeeds.parse(noiseText);
         if (noises.length == 0) {
             System.err.println("fdnet bench roq: --noise must be a range FROM-TO (FROM <= TO, at most 1000 seeds) or a"
-                    + " comma-separated list of seeds, was " + noise);
+                    + " comma-separated list of seeds, was " + noiseText);
             return 2;
         }
         if (sweepSeconds < 10) {
@@ -169,7 +174,7 @@ public final class BenchRoqCommand implements Callable<Integer> {
                 return 0;
             }
             if (part.equals("heading")) {
-                new HeadingDriftBench(load(network), seeds, headingSeconds, 5).run();
+                new HeadingDriftBench(load(network), seeds, headingSeconds, noises).run();
                 return 0;
             }
             if (part.contains("a")) {

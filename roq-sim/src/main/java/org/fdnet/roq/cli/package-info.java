@@ -10,7 +10,9 @@
  * {@code ReflexLatencyBench}: stimulus-to-applied-command latency through the network, {@code StimulusLatencyRun}
  * per run; {@code --part push}: {@code PushSurvivalBench}, the largest push survived with and without Balance and
  * Reflex, by bisection over stepped {@code PushTrial}s; {@code --part heading}: {@code HeadingDriftBench}, drift
- * off the course line with and without module Course).
+ * off the course line with and without module Course, means over noise seeds; {@code --part breakthroughs}:
+ * {@code BreakthroughSweep}, cells broken under a loaded foot summed over noise seeds, with and without module
+ * Probing; {@code NoiseSeeds} reads their {@code --noise}).
  *
  * <pre>
  *   fdnet demo ──▶ DemoCommand ──▶ InProcessLogger? ─▶ RuntimeNetwork + RoqSimulator (real time) + SimBridge

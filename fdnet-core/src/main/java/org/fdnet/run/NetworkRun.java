@@ -20,9 +20,7 @@ import org.fdnet.event.EventSink;
 import org.fdnet.event.RunIdentity;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
-import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
-import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.xml.NetworkFileException;
 import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.runtime.ChangeOutcome;
@@ -30,6 +28,7 @@ import org.fdnet.runtime.NetworkControl;
 import org.fdnet.runtime.RelationStatus;
 import org.fdnet.runtime.cli.ControlCommands;
 import org.fdnet.runtime.cli.SimulatedPlant;
+import org.fdnet.runtime.cli.ParameterAssignment;
 import org.fdnet.runtime.cli.ValueAssignment;
 import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.fdnet.runtime.engine.RuntimeOptions;
@@ -331,13 +330,13 @@ public final class NetworkRun {
             }
         }
         for (String p : options.params) {
-            int colon = p.indexOf(':');
-            int eq = p.indexOf('=', Math.max(colon, 0));
-            if (colon < 0 || eq < 0) {
-                return refused("--param " + p, "expected MODULE/NODE:NAME=VALUE");
+            ParameterAssignment assignment;
+            try {
+                assignment = ParameterAssignment.parse(p);
+            } catch (IllegalArgumentException e) {
+                return refused("--param " + p, e.getMessage());
             }
-            ChangeOutcome o = control.setParameter(NodeRef.parse(p.substring(0, colon).strip(), ModuleInfo.MAIN),
-                    p.substring(colon + 1, eq).strip(), p.substring(eq + 1));
+            ChangeOutcome o = control.setParameter(assignment.node(), assignment.name(), assignment.value());
             if (!o.executed()) {
                 return refused("--param " + p, o.reason());
             }

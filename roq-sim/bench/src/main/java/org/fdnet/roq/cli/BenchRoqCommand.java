@@ -3,6 +3,8 @@ package org.fdnet.roq.cli;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.fdnet.netinfo.NetworkInfo;
@@ -17,6 +19,7 @@ import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.roq.sim.SimMode;
 import org.fdnet.runtime.engine.DrivenClock;
+import org.fdnet.runtime.cli.ParameterAssignment;
 import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.fdnet.runtime.engine.RuntimeOptions;
 import picocli.CommandLine.Command;
@@ -91,6 +94,11 @@ public final class BenchRoqCommand implements Callable<Integer> {
             description = "(breakthroughs, heading) sensor-noise seeds: a range FROM-TO or a list (default: breakthroughs"
                     + " 1-24; heading " + HEADING_NOISE + ", RoqCoursesTest's)")
     String noise;
+
+    @Option(names = "--param", paramLabel = "MODULE/NODE:NAME=VALUE",
+            description = "(breakthroughs, heading) set a node parameter of --network before the runs (repeatable;"
+                    + " the parameter must be in the file), as fdnet run --param does")
+    List<String> params = new ArrayList<>();
 
     /** The heading runs' default noise seeds: RoqCoursesTest's eight. */
     static final String HEADING_NOISE = "5,105,205,305,405,505,605,705";
@@ -169,12 +177,16 @@ public final class BenchRoqCommand implements Callable<Integer> {
                         .run();
                 return 0;
             }
-            if (part.equals("breakthroughs")) {
-                new BreakthroughSweep(load(network), CourseLoader.resolve(course), noises, sweepSeconds).run();
-                return 0;
-            }
-            if (part.equals("heading")) {
-                new HeadingDriftBench(load(network), seeds, headingSeconds, noises).run();
+            if (part.equals("breakthroughs") || part.equals("heading")) {
+                NetworkInfo definition = withParams(load(network));
+                if (definition == null) {
+                    return 2;
+                }
+                if (part.equals("heading")) {
+                    new HeadingDriftBench(definition, seeds, headingSeconds, noises).run();
+                } else {
+                    new BreakthroughSweep(definition, CourseLoader.resolve(course), noises, sweepSeconds).run();
+                }
                 return 0;
             }
             if (part.contains("a")) {
@@ -192,6 +204,22 @@ public final class BenchRoqCommand implements Callable<Integer> {
             System.err.println("fdnet bench roq: no network file " + e.getFile());
             return 2;
         }
+    }
+
+    /** {@code definition} with every {@code --param} applied, or null (said why) when one does not fit it. */
+    private NetworkInfo withParams(NetworkInfo definition) {
+        for (String p : params) {
+            try {
+                ParameterAssignment.parse(p).applyTo(definition);
+            } catch (IllegalArgumentException e) {
+                System.err.println("fdnet bench roq: --param " + p + ": " + e.getMessage());
+                return null;
+            }
+        }
+        if (!params.isEmpty()) {
+            System.out.println("fdnet bench roq: " + definition.name() + " with " + String.join(", ", params));
+        }
+        return definition;
     }
 
     private static NetworkInfo load(Path file) throws NetworkFileException, NoSuchFileException {

@@ -37,10 +37,10 @@ import org.fdnet.runtime.Value;
  * body turned 0.17 rad and went on creeping round at 10 mrad/s while it stood, measured).
  *
  * <p>{@code rise} (default 0): lift-off by contact. The part of each swing in which the foot only rises; it goes
- * forward after that, once its sole (the input named {@code foot forces}, when connected) is unloaded. Should the foot still bear load
- * half-way through its swing (a brace, the body sagging onto it), the phase waits for it, at most 1 s. A foot that
- * started forward while still down was driven along the ground into whatever stood before it (on {@code crossing},
- * a crust's rear face: 14 of 35 loaded-foot breakthroughs over 24 noise seeds, measured).
+ * forward after that, once its sole (the input named {@code foot forces}, when connected) is unloaded. Should the
+ * foot still bear load half-way through its swing (a brace, the body sagging onto it), the phase waits for it, at
+ * most 1 s. A foot that started forward while still down was driven along the ground into whatever stood before it
+ * (on {@code crossing}, a crust's rear face: 14 of 35 loaded-foot breakthroughs over 24 noise seeds, measured).
  *
  * <p>{@code stance} (m, default the standing pose's 0.43): how far each foot stands from the body's centre line.
  * The simulator sets RoQ down in its standing pose; each leg moves to the stance while it swings, so after the
@@ -239,6 +239,7 @@ public class CrawlGait extends Relation {
                 x = stride / 2 - shorten[leg] - stride * s;
                 swung[leg] = false;
                 cleared[leg] = false;
+                sole[leg] = Double.NaN; // its next swing's running mean starts from the load it lifts off with
                 rotation[leg] -= turnPerStance * advanced / (1 - swing);
                 turn = rotation[leg];
             }
@@ -280,7 +281,8 @@ public class CrawlGait extends Relation {
         boolean read = soles != null && soles.length() > leg;
         if (read) {
             double raw = soles.element(leg);
-            sole[leg] = Double.isNaN(sole[leg]) ? raw : sole[leg] + (raw - sole[leg]) * (1 - Math.exp(-dt / SOLE_SMOOTHING));
+            sole[leg] = Double.isNaN(sole[leg]) ? raw
+                    : sole[leg] + (raw - sole[leg]) * (1 - Math.exp(-dt / SOLE_SMOOTHING));
         }
         boolean free = !read || sole[leg] < UNLOADED;
         if (!cleared[leg]) {

@@ -10,14 +10,13 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
-import org.fdnet.netinfo.Parameter;
-import org.fdnet.netinfo.ParameterType;
 import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.roq.sim.CourseLoader;
 import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.runtime.Value;
+import org.fdnet.runtime.cli.ParameterAssignment;
 import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -79,14 +78,7 @@ class SwingLiftoffTest {
 
     private static NetworkInfo withRise(double rise) throws Exception {
         NetworkInfo info = NetworkRepository.load(RUBBLE);
-        List<Parameter> params = new ArrayList<>();
-        for (Parameter p : info.node(CRAWL).parameters()) {
-            if (!p.name().equals("rise")) {
-                params.add(p);
-            }
-        }
-        params.add(new Parameter("rise", ParameterType.DOUBLE, Double.toString(rise)));
-        info.setParameters(CRAWL, params);
+        new ParameterAssignment(CRAWL, "rise", Double.toString(rise)).applyTo(info);
         return info;
     }
 

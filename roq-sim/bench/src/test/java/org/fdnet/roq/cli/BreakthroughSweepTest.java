@@ -9,9 +9,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
- * {@code bench roq --part breakthroughs} on the {@code fragile} course, two noise seeds, 40 s: the sums it prints
+ * {@code bench roq --part breakthroughs} on the {@code crossing} course, two noise seeds, 40 s: the sums it prints
  * are those of the runs, and probing is what keeps the crusts from breaking under loaded feet — without module
- * Probing every crust stepped on breaks under load (measured: 128 against 34 over 24 seeds of {@code crossing}).
+ * Probing every crust stepped on breaks under load (measured: these two runs 0 against 12, 7 crusts found by the
+ * probes; 128 against 34 over 24 seeds of 100 s).
  */
 @Timeout(300)
 class BreakthroughSweepTest {
@@ -19,7 +20,7 @@ class BreakthroughSweepTest {
 
     @Test
     void shouldCountFewerLoadedFootBreakthroughsWithProbingThanWithout() throws Exception {
-        BreakthroughSweep sweep = new BreakthroughSweep(NetworkRepository.load(NETWORK), CourseLoader.resolve("fragile"),
+        BreakthroughSweep sweep = new BreakthroughSweep(NetworkRepository.load(NETWORK), CourseLoader.resolve("crossing"),
                 new long[] {30, 31}, 40);
         BreakthroughSweep.Sum probed = sweep.run();
         assertThat(probed.runs()).isEqualTo(2);

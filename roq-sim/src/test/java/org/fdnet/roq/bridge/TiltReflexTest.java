@@ -40,7 +40,7 @@ class TiltReflexTest {
     private static final NodeRef PRESS = NodeRef.parse("reflex press", "Reflex");
     /** roq-reflex-bench's brace: the stance feet's move along the fall and the crouch, m. */
     private static final double SHIFT = 0.08;
-    private static final double CROUCH = 0.05;
+    private static final double CROUCH = 0.14;
 
     @Test
     void shouldSetTheSwingingFootDownWhenAPushTipsRoq() throws Exception {

@@ -33,7 +33,12 @@ import org.fdnet.runtime.engine.RuntimeOptions;
  * attitude or gyro reading, after the push began, beyond the tilt reflex's own thresholds ({@code tilt},
  * {@code rate} of its {@link TiltReflex}) — to the tick the loop applied the first command computed from that
  * snapshot or a later one (its source tick, {@link org.fdnet.runtime.Value#tick()}), + 1: the tick it first shows
- * in a snapshot. The bridge sends only commands that changed, so every command counted changed the targets.
+ * in a snapshot. The bridge sends only commands that changed, so every command counted changed the targets. A push
+ * (not a drop: each drop has a run of its own) is armed only once every reading has stayed within those thresholds
+ * for {@link #CALM_TICKS} ticks and the reflex's correction is back to zero (waiting at most 5 s): while RoQ still
+ * moves beyond them no snapshot can show the next push, and while the reflex still braces for the last one, with the
+ * same leg and aim, the next one's snapshot has nothing new for it to answer (session 8: 6 of 100 answers took 4–10
+ * ms that way once the deeper crouch made the braces last longer).
  *
  * <pre>
  *  push ─▶ snapshot S: reading beyond threshold ─▶ network ─▶ JointTargets (source tick ≥ S) ─▶ applied at tick A
@@ -51,6 +56,13 @@ final class StimulusLatencyRun {
     private static final int SECONDS_A_PUSH = 4;
     /** After an answer, before the next push: the reflex holds 0.3 s and fades over 0.3 s more. */
     private static final long SETTLE_MILLIS = 1000;
+    /**
+     * Ticks every reading must have stayed within the reflex's thresholds before a push is armed: a push into a body
+     * still moving beyond them shows in no snapshot (the first one after it is already beyond).
+     */
+    private static final long CALM_TICKS = 100;
+    /** The longest a push waits for calm before it is armed regardless, ns. */
+    private static final long MOST_CALM_WAIT_NANOS = 5_000_000_000L;
 
     record Outcome(int stimuli, int shown, LatencySample latencies, boolean fell, List<String> traces) {
     }
@@ -79,6 +91,8 @@ final class StimulusLatencyRun {
     private final String reflexModule;
     private final AtomicLong armedAfter = new AtomicLong(Long.MAX_VALUE);
     private final AtomicLong shownAt = new AtomicLong(-1);
+    /** The tick of the newest reading beyond the reflex's thresholds, armed or not. */
+    private final AtomicLong lastBeyond = new AtomicLong(Long.MIN_VALUE / 2);
     private final long[] appliedTicks = new long[64];
     private final long[] sourceTicks = new long[64];
     private long seen;
@@ -165,6 +179,7 @@ final class StimulusLatencyRun {
                 }
             }
             NodeRef phase = dataNamed(net, "gait phase");
+            NodeRef reflexPress = dataNamed(net, "reflex press");
             NodeRef fallen = dataNamed(net, "fallen");
             SensorSnapshot s = new SensorSnapshot();
             long end = System.nanoTime() + runSeconds * 1_000_000_000L;
@@ -173,12 +188,19 @@ final class StimulusLatencyRun {
             }
             seen = sim.appliedCommands(0, appliedTicks, sourceTicks);
             BridgeAllocation allocation = trace && kind == Kind.PUSH ? BridgeAllocation.start(bridge) : null;
+            long calmDeadline = System.nanoTime() + MOST_CALM_WAIT_NANOS;
             while (System.nanoTime() < end && sample.count() < pushes && !(fell = isTrue(net, fallen))) {
                 int leg = legInTheAir(net, phase, end);
                 if (leg < 0 || (kind == Kind.CELL_BREAK && leg != HIND_RIGHT)) {
                     continue;
                 }
-                long first = sim.read(s) + 3;
+                long now = sim.read(s);
+                if (kind == Kind.PUSH && (now - lastBeyond.get() < CALM_TICKS || braced(net, reflexPress))
+                        && System.nanoTime() < calmDeadline) {
+                    continue; // still answering the last push: a snapshot now could not show the next one
+                }
+                calmDeadline = System.nanoTime() + MOST_CALM_WAIT_NANOS;
+                long first = now + 3;
                 shownAt.set(-1);
                 stages.arm();
                 armedAfter.set(first);
@@ -221,9 +243,11 @@ final class StimulusLatencyRun {
     /** A reading beyond {@code limit} (in roll or pitch, the first two elements) after the armed push began. */
     private void check(Value v, double limit) {
         stages.sensorCommitted(v.tick());
-        if (v.tick() > armedAfter.get() && shownAt.get() < 0 && v.length() >= 2
-                && (Math.abs(v.element(0)) > limit || Math.abs(v.element(1)) > limit)
-                && shownAt.compareAndSet(-1, v.tick())) {
+        boolean beyond = v.length() >= 2 && (Math.abs(v.element(0)) > limit || Math.abs(v.element(1)) > limit);
+        if (beyond) {
+            lastBeyond.accumulateAndGet(v.tick(), Math::max);
+        }
+        if (beyond && v.tick() > armedAfter.get() && shownAt.get() < 0 && shownAt.compareAndSet(-1, v.tick())) {
             stages.shown(v.tick());
         }
     }
@@ -258,6 +282,25 @@ final class StimulusLatencyRun {
             Thread.sleep(2);
         }
         return -1;
+    }
+
+    /** Whether the reflex's correction ({@code press}, null or unloaded: none) is not all zero: it still braces. */
+    private static boolean braced(RuntimeNetwork net, NodeRef press) {
+        Value v;
+        try {
+            v = press == null ? null : net.controller().value(press);
+        } catch (RuntimeException unloaded) {
+            return false;
+        }
+        if (v == null) {
+            return false;
+        }
+        for (int i = 0; i < v.length(); i++) {
+            if (v.element(i) != 0) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static boolean isTrue(RuntimeNetwork net, NodeRef ref) {

@@ -91,9 +91,14 @@ public final class BenchRoqCommand implements Callable<Integer> {
     int headingSeconds;
 
     @Option(names = "--noise",
-            description = "(breakthroughs, heading) sensor-noise seeds: a range FROM-TO or a list (default: breakthroughs"
-                    + " 1-24; heading " + HEADING_NOISE + ", RoqCoursesTest's)")
+            description = "(breakthroughs, heading, push) sensor-noise seeds: a range FROM-TO or a list (default:"
+                    + " breakthroughs 1-24; heading " + HEADING_NOISE + ", RoqCoursesTest's; push 7, one table a seed)")
     String noise;
+
+    @Option(names = "--whole-scan",
+            description = "(push) go on scanning every 50 N push up to the largest after the first failure, and print"
+                    + " how many each variant survived (about twice the runs)")
+    boolean wholeScan;
 
     @Option(names = "--param", paramLabel = "MODULE/NODE:NAME=VALUE",
             description = "(breakthroughs, heading) set a node parameter of --network before the runs (repeatable;"
@@ -142,7 +147,8 @@ public final class BenchRoqCommand implements Callable<Integer> {
             System.err.println("fdnet bench roq: --part must be a, b, ab, push, heading or breakthroughs, was " + part);
             return 2;
         }
-        String noiseText = noise != null ? noise : part.equals("heading") ? HEADING_NOISE : "1-24";
+        String noiseText = noise != null ? noise : part.equals("heading") ? HEADING_NOISE
+                : part.equals("push") ? "7" : "1-24";
         long[] noises = NoiseSeeds.parse(noiseText);
         if (noises.length == 0) {
             System.err.println("fdnet bench roq: --noise must be a range FROM-TO (FROM <= TO, at most 1000 seeds) or a"
@@ -173,8 +179,10 @@ public final class BenchRoqCommand implements Callable<Integer> {
         }
         try {
             if (part.equals("push")) {
-                new PushSurvivalBench(load(reflexNetwork), CourseLoader.resolve(reflexCourse), 7, directions, offsets, 5)
-                        .run();
+                for (long seed : noises) {
+                    new PushSurvivalBench(load(reflexNetwork), CourseLoader.resolve(reflexCourse), seed, directions,
+                            offsets, 5, wholeScan).run();
+                }
                 return 0;
             }
             if (part.equals("breakthroughs") || part.equals("heading")) {

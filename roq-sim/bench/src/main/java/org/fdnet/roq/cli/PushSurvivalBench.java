@@ -15,7 +15,7 @@ import org.fdnet.roq.sim.RoqGeometry;
  * {@code fdnet bench roq --part push}: for each push direction and each phase of a leg lift, the largest push RoQ
  * survives with the full network beside the same network with Balance and Reflex unloaded, and their ratio, by two
  * definitions measured alike for both: the largest push below which every push of a {@link #SCAN_STEP} N scan is
- * survived ({@link PushTrial#survivedThroughout}, the headline: it assumes nothing above the first failure) and the
+ * survived ({@link PushTrial#scan}, the headline: it assumes nothing above the first failure) and the
  * bisection's answer ({@link PushTrial#largestSurvived}, which assumes survival falls with force; printed beside it
  * because sideways it does not). Stepped and deterministic; the rows run on at most two threads.
  */
@@ -31,22 +31,29 @@ final class PushSurvivalBench {
     private final double[] directions;
     private final double[] offsets;
     private final double resolution;
+    private final boolean wholeScan;
 
     PushSurvivalBench(NetworkInfo network, Course course, long noise, double[] directions, double[] offsets,
-                      double resolution) {
+                      double resolution, boolean wholeScan) {
         this.network = network;
         this.course = course;
         this.noise = noise;
         this.directions = directions.clone();
         this.offsets = offsets.clone();
         this.resolution = resolution;
+        this.wholeScan = wholeScan;
     }
 
     /** One set-up's two answers in one row. */
-    private record Limits(PushTrial.Limit throughout, PushTrial.Limit bisected) {
-        static Limits of(PushTrial trial, double direction, double offset, double resolution) throws Exception {
-            return new Limits(trial.survivedThroughout(direction, offset, SCAN_STEP),
+    private record Limits(PushTrial.Scan scan, PushTrial.Limit bisected) {
+        static Limits of(PushTrial trial, double direction, double offset, double resolution, boolean whole)
+                throws Exception {
+            return new Limits(trial.scan(direction, offset, SCAN_STEP, whole),
                     trial.largestSurvived(direction, offset, resolution));
+        }
+
+        PushTrial.Limit throughout() {
+            return new PushTrial.Limit(scan.throughout(), scan.leg());
         }
     }
 
@@ -67,12 +74,15 @@ final class PushSurvivalBench {
         try {
             for (double d : directions) {
                 for (double o : offsets) {
-                    withNetwork.add(pool.submit(() -> Limits.of(full, d, o, resolution)));
-                    without.add(pool.submit(() -> Limits.of(bare, d, o, resolution)));
+                    withNetwork.add(pool.submit(() -> Limits.of(full, d, o, resolution, wholeScan)));
+                    without.add(pool.submit(() -> Limits.of(bare, d, o, resolution, wholeScan)));
                 }
             }
             System.out.println("direction  offset   every: full / unloaded   ratio   bisection: full / unloaded   ratio"
-                    + "  leg in the air");
+                    + "  leg in the air" + (wholeScan ? "  scan survived: full / unloaded" : ""));
+            int survivedFull = 0;
+            int survivedBare = 0;
+            int tried = 0;
             Ratios every = new Ratios();
             Ratios bisected = new Ratios();
             int k = 0;
@@ -81,14 +91,22 @@ final class PushSurvivalBench {
                     Limits f = withNetwork.get(k).get();
                     Limits b = without.get(k).get();
                     k++;
-                    System.out.printf(Locale.ROOT, "%7.1f°  %5.2f s  %7s / %-7s  %6.2f×  %11s / %-7s  %6.2f×  %s%n", d, o,
+                    System.out.printf(Locale.ROOT, "%7.1f°  %5.2f s  %7s / %-7s  %6.2f×  %11s / %-7s  %6.2f×  %s%s%n", d, o,
                             newtons(f.throughout()), newtons(b.throughout()), every.add(f.throughout(), b.throughout()),
                             newtons(f.bisected()), newtons(b.bisected()), bisected.add(f.bisected(), b.bisected()),
-                            RoqGeometry.LEG_NAMES[f.bisected().leg()]);
+                            RoqGeometry.LEG_NAMES[f.bisected().leg()], wholeScan ? String.format(Locale.ROOT,
+                                    "  %13d / %d of %d", f.scan().survived(), b.scan().survived(), f.scan().tried()) : "");
+                    survivedFull += f.scan().survived();
+                    survivedBare += b.scan().survived();
+                    tried += f.scan().tried();
                 }
             }
             every.print("every");
             bisected.print("bisection");
+            if (wholeScan) {
+                System.out.printf(Locale.ROOT, "whole scan (every %.0f N push up to %.0f N): full network survived %d of"
+                        + " %d, unloaded %d of %d%n", SCAN_STEP, Push.MAX_FORCE, survivedFull, tried, survivedBare, tried);
+            }
             return every.least;
         } finally {
             pool.shutdownNow();

@@ -122,23 +122,53 @@ final class PushTrial {
 
     /**
      * The largest push (N) such that this set-up survives it and every push below it in steps of {@code step} N:
-     * {@code step}, 2 {@code step} … until the first one it does not survive (or {@link Push#MAX_FORCE}). Unlike
+     * {@code step}, 2 {@code step} … until the first one it does not survive (or {@link Push#MAX_FORCE}), and, when
+     * {@code whole}, the scan goes on to {@link Push#MAX_FORCE} counting every push survived. Unlike
      * {@link #largestSurvived} it assumes nothing about forces above the first failure; sideways, where a strong
      * push slides RoQ across the floor, survival does not fall with force (a row survives 1300 N after failing at
-     * 750 N) and a bisection's answer there depends on where its halvings happen to land.
+     * 750 N) and a bisection's answer there depends on where its halvings happen to land — there how many of the
+     * throws RoQ lands from says more than where the first failure falls.
      */
-    Limit survivedThroughout(double direction, double offset, double step) throws Exception {
-        double survived = 0;
+    Scan scan(double direction, double offset, double step, boolean whole) throws Exception {
+        return scan(force -> run(force, direction, offset), step, whole);
+    }
+
+    /** One push of {@code force} N and what it did. */
+    @FunctionalInterface
+    interface Pushing {
+        Outcome push(double force) throws Exception;
+    }
+
+    /** The scan of {@link #scan(double, double, double, boolean)} over any {@code pushing}. */
+    static Scan scan(Pushing pushing, double step, boolean whole) throws Exception {
+        double throughout = 0;
+        boolean failed = false;
+        int survived = 0;
+        int tried = 0;
         int leg = -1;
-        for (double force = step; force <= Push.MAX_FORCE; force += step) {
-            Outcome o = run(force, direction, offset);
+        for (double force = step; force <= Push.MAX_FORCE && (whole || !failed); force += step) {
+            Outcome o = pushing.push(force);
             leg = o.leg();
-            if (!o.survived()) {
-                break;
+            tried++;
+            if (o.survived()) {
+                survived++;
+                throughout = failed ? throughout : force;
+            } else {
+                failed = true;
             }
-            survived = force;
         }
-        return new Limit(survived, leg);
+        return new Scan(throughout, survived, tried, leg);
+    }
+
+    /**
+     * A scan's answer.
+     *
+     * @param throughout the largest push below which every push of the scan was survived, N
+     * @param survived   pushes of the scan survived
+     * @param tried      pushes of the scan tried
+     * @param leg        the leg in the air when the last push began
+     */
+    record Scan(double throughout, int survived, int tried, int leg) {
     }
 
     /**

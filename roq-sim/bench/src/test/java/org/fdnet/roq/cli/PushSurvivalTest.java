@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.roq.sim.CourseLoader;
+import org.fdnet.roq.sim.Push;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
@@ -57,6 +58,20 @@ class PushSurvivalTest {
         // off the table: 202.5°, 0.2 s; 500 N is 0.26 × the network's 1900 N, 2.5 × the 200 N without (every push from
         // 250 N to 800 N tips it over; session 6's network survived 300 N)
         assertSurvivedOnlyWithTheNetwork(500, 202.5, 0.2);
+    }
+
+    @Test
+    void shouldCountEveryPushOfAWholeScanButStopAtTheFirstFailureOtherwise() throws Exception {
+        // survived below 300 N, not at 300, again from 350 to 600 N, not from 650 N on
+        PushTrial.Pushing pattern = force -> new PushTrial.Outcome(force < 300 || force > 320 && force < 620, 0, 0, 1);
+        PushTrial.Scan whole = PushTrial.scan(pattern, 50, true);
+        PushTrial.Scan first = PushTrial.scan(pattern, 50, false);
+        assertThat(whole.throughout()).isEqualTo(250);
+        assertThat(whole.survived()).isEqualTo(5 + 6);
+        assertThat(whole.tried()).isEqualTo((int) (Push.MAX_FORCE / 50));
+        assertThat(first.throughout()).isEqualTo(250);
+        assertThat(first.tried()).isEqualTo(6);
+        assertThat(first.survived()).isEqualTo(5);
     }
 
     private static void assertSurvivedOnlyWithTheNetwork(double force, double direction, double offset)

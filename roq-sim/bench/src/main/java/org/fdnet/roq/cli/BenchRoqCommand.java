@@ -179,9 +179,10 @@ public final class BenchRoqCommand implements Callable<Integer> {
         }
         try {
             if (part.equals("push")) {
+                NetworkInfo definition = load(reflexNetwork);
+                Course pushed = CourseLoader.resolve(reflexCourse);
                 for (long seed : noises) {
-                    new PushSurvivalBench(load(reflexNetwork), CourseLoader.resolve(reflexCourse), seed, directions,
-                            offsets, 5, wholeScan).run();
+                    new PushSurvivalBench(definition, pushed, seed, directions, offsets, 5, wholeScan).run();
                 }
                 return 0;
             }

@@ -169,17 +169,16 @@ final class StimulusLatencyRun {
             for (NodeRef ref : sensors(net, "imu_gyro")) {
                 watches.add(net.controller().observe(ref, (r, id, v) -> check(v, rate)));
             }
+            NodeRef reflexPress = dataNamed(net, "reflex press");
             if (trace) {
-                NodeRef press = dataNamed(net, "reflex press");
-                if (press != null) {
-                    watches.add(net.controller().observe(press, (r, id, v) -> stages.reflexWrote(v)));
+                if (reflexPress != null) {
+                    watches.add(net.controller().observe(reflexPress, (r, id, v) -> stages.reflexWrote(v)));
                 }
                 for (NodeRef ref : net.readDefinition(def -> SimBridge.nodesOf(def, JointTargets.class))) {
                     watches.add(net.controller().observe(ref, (r, id, v) -> stages.targetsWritten(v.tick())));
                 }
             }
             NodeRef phase = dataNamed(net, "gait phase");
-            NodeRef reflexPress = dataNamed(net, "reflex press");
             NodeRef fallen = dataNamed(net, "fallen");
             SensorSnapshot s = new SensorSnapshot();
             long end = System.nanoTime() + runSeconds * 1_000_000_000L;

@@ -1,7 +1,10 @@
 package org.fdnet.roq.bridge;
 
+import java.util.List;
 import java.util.Locale;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.roq.sim.FragileCell;
+import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.runtime.Value;
 import org.fdnet.runtime.engine.RuntimeNetwork;
@@ -40,23 +43,64 @@ public final class CourseMeter {
     private int broken;
     private int probeBroken;
     private int loadedBreakthroughs;
+    /** Whose foot each loaded-foot breakthrough was under (null: the cells are not known). */
+    private final BreakthroughCauses causes;
+    private final double[] foot = new double[3];
+    private final double[] world = new double[3];
+    private final double[] feet = new double[2 * RoqGeometry.LEGS];
+    private final boolean[] brokenNow;
 
     /** Starts measuring from {@code start}: its position across and its heading are the course line's. */
     public CourseMeter(SensorSnapshot start) {
-        this(start.groundTruthBodyPosition(1), start.groundTruthYaw(), start.brokenCellCount());
+        this(start, List.of());
+    }
+
+    /** Starts measuring from {@code start} on a course with fragile {@code cells}, telling whose foot broke them. */
+    public CourseMeter(SensorSnapshot start, List<FragileCell> cells) {
+        this(start.groundTruthBodyPosition(1), start.groundTruthYaw(), start.brokenCellCount(), cells);
     }
 
     /** Starts measuring from the course line at {@code y0} heading {@code yaw0}, {@code broken} cells broken so far. */
     CourseMeter(double y0, double yaw0, int broken) {
+        this(y0, yaw0, broken, List.of());
+    }
+
+    private CourseMeter(double y0, double yaw0, int broken, List<FragileCell> cells) {
         this.y0 = y0;
         this.yaw0 = yaw0;
         this.broken = broken;
+        this.causes = cells.isEmpty() ? null : new BreakthroughCauses(cells);
+        this.brokenNow = new boolean[cells.size()];
     }
 
     /** Takes one sample (every 10 ms): {@code s} now and the network whose gait phase tells a probe's press. */
     public void sample(SensorSnapshot s, RuntimeNetwork network) {
+        Value phase = phase(network);
+        boolean probing = phase != null && phase.length() == 3 && phase.element(2) > 0;
+        if (causes != null) {
+            boolean up = phase != null && phase.length() >= 2 && (phase.element(1) > 0 || probing);
+            causes.sample(feetInWorld(s), up ? (int) phase.element(0) : -1, brokenCells(s), probing);
+        }
         boolean newBreak = s.brokenCellCount() > broken;
-        sample(s.groundTruthBodyPosition(1), s.groundTruthYaw(), s.brokenCellCount(), newBreak && probing(network));
+        sample(s.groundTruthBodyPosition(1), s.groundTruthYaw(), s.brokenCellCount(), newBreak && probing);
+    }
+
+    /** The feet's centres in the world frame (x, y per foot) by ground truth and the measured joint angles. */
+    private double[] feetInWorld(SensorSnapshot s) {
+        for (int leg = 0; leg < RoqGeometry.LEGS; leg++) {
+            RoqGeometry.footInBody(leg, s.jointAngle(3 * leg), s.jointAngle(3 * leg + 1), s.jointAngle(3 * leg + 2), foot);
+            s.groundTruthToWorld(foot, world);
+            feet[2 * leg] = world[0];
+            feet[2 * leg + 1] = world[1];
+        }
+        return feet;
+    }
+
+    private boolean[] brokenCells(SensorSnapshot s) {
+        for (int i = 0; i < brokenNow.length; i++) {
+            brokenNow[i] = s.isCellBroken(i);
+        }
+        return brokenNow;
     }
 
     /**
@@ -88,13 +132,17 @@ public final class CourseMeter {
 
     /** Whether {@code network}'s gait phase says a probe presses now (false without such a Data). */
     static boolean probing(RuntimeNetwork network) {
-        Value phase;
-        try {
-            phase = network.controller().value(NodeRef.parse(PHASE, PHASE_MODULE));
-        } catch (RuntimeException notLoaded) {
-            return false; // no gait phase (unloaded, or another network): no press is known, the break counts as loaded
-        }
+        Value phase = phase(network);
         return phase != null && phase.length() == 3 && phase.element(2) > 0;
+    }
+
+    /** {@code network}'s gait phase, or null without one. */
+    private static Value phase(RuntimeNetwork network) {
+        try {
+            return network.controller().value(NodeRef.parse(PHASE, PHASE_MODULE));
+        } catch (RuntimeException notLoaded) {
+            return null; // no gait phase (unloaded, or another network): no press is known, the break counts as loaded
+        }
     }
 
     /** The largest |y − y at the start| averaged over a cycle, m (0 before the first whole cycle). */
@@ -127,11 +175,17 @@ public final class CourseMeter {
         return loadedBreakthroughs;
     }
 
+    /** Whose foot the loaded-foot breakthroughs were under; null when the meter was not given the course's cells. */
+    public BreakthroughCauses causes() {
+        return causes;
+    }
+
     /** The one summary line of these figures. */
     public String summary() {
-        return String.format(Locale.ROOT, "cells broken by probes %d, loaded-foot breakthroughs %d; off the course"
+        return String.format(Locale.ROOT, "cells broken by probes %d, loaded-foot breakthroughs %d%s; off the course"
                         + " line max %.3f m, at the end %.3f m; heading error max %.3f rad, at the end %.3f rad"
                         + " (ground truth, each averaged over a %.1f s crawl cycle)", probeBroken, loadedBreakthroughs,
+                causes == null || loadedBreakthroughs == 0 ? "" : " (" + causes.summary() + ")",
                 maxTrack, endTrack(), maxHeading, endHeading(), WINDOW / 100.0);
     }
 

@@ -33,9 +33,14 @@ import org.fdnet.runtime.engine.RuntimeStartException;
  * @param fallen                FallDetector's latch at the end
  * @param probeBroken           cells that broke while a probe pressed (on purpose)
  * @param loadedBreakthroughs   cells that broke while no probe pressed: under a foot that had been accepted and loaded
+ * @param underSwingingFoot     of those, under the foot of the leg in the air ({@link BreakthroughCauses})
+ * @param underStandingFoot     of those, under a standing foot
+ * @param slidSinceSetDown      of those under a standing foot, the ones whose foot had slid 2 cm or more since it was
+ *                              set down
  */
 public record CourseRun(String label, double distance, double trackError, double headingError, double finalHeading,
-                 double tilt, boolean fallen, int probeBroken, int loadedBreakthroughs) {
+                 double tilt, boolean fallen, int probeBroken, int loadedBreakthroughs, int underSwingingFoot,
+                 int underStandingFoot, int slidSinceSetDown) {
     /** Runs {@code network} on {@code course} for {@code seconds} of simulated time, noise seed {@code noise}. */
     public static CourseRun of(String label, Path network, Course course, int seconds, long noise, String... unloaded)
             throws Exception {
@@ -52,7 +57,7 @@ public record CourseRun(String label, double distance, double trackError, double
             SensorSnapshot s = bridge.lastSnapshot();
             double x0 = s.groundTruthBodyPosition(0);
             double yaw0 = s.groundTruthYaw();
-            CourseMeter meter = new CourseMeter(s);
+            CourseMeter meter = new CourseMeter(s, course.fragileCells());
             double tilt = 0;
             for (int t = 0; t < seconds * 100; t++) {
                 bridge.run(10);
@@ -61,9 +66,12 @@ public record CourseRun(String label, double distance, double trackError, double
                 tilt = Math.max(tilt, Math.max(Math.abs(s.roll()), Math.abs(s.pitch())));
             }
             Value fallen = value(net, "fallen", "main");
+            BreakthroughCauses causes = meter.causes();
             return new CourseRun(label, s.groundTruthBodyPosition(0) - x0, meter.maxTrackError(),
                     meter.maxHeadingError(), CourseMeter.angle(s.groundTruthYaw() - yaw0), tilt,
-                    fallen != null && fallen.asBoolean(), meter.probeBroken(), meter.loadedBreakthroughs());
+                    fallen != null && fallen.asBoolean(), meter.probeBroken(), meter.loadedBreakthroughs(),
+                    causes == null ? 0 : causes.swinging(), causes == null ? 0 : causes.standing(),
+                    causes == null ? 0 : causes.slid());
         }
     }
 
@@ -104,7 +112,9 @@ public record CourseRun(String label, double distance, double trackError, double
     @Override
     public String toString() {
         return String.format(Locale.ROOT, "%s: %.3f m, track %.3f m, heading %.3f (end %.3f) rad, tilt %.3f rad,"
-                        + " fallen %s, probe-broken %d, loaded-foot breakthroughs %d", label, distance, trackError,
-                headingError, finalHeading, tilt, fallen, probeBroken, loadedBreakthroughs);
+                        + " fallen %s, probe-broken %d, loaded-foot breakthroughs %d (under a swinging foot %d, under a"
+                        + " standing foot %d, slid since set down %d)", label, distance, trackError, headingError,
+                finalHeading, tilt, fallen, probeBroken, loadedBreakthroughs, underSwingingFoot, underStandingFoot,
+                slidSinceSetDown);
     }
 }

@@ -210,7 +210,7 @@ public final class DemoCommand implements Callable<Integer> {
             if (gui) {
                 window = RoqDemoWindow.open("FDNet demo: " + definition.name() + " on " + c.name(), sim.heightfield());
             }
-            onCourse = new CourseMeter(s);
+            onCourse = new CourseMeter(s, c.fragileCells());
             long samples = runFor.toMillis() / SAMPLE_MILLIS;
             long t0 = System.nanoTime();
             for (long sample = 1; sample <= samples; sample++) {

@@ -203,6 +203,23 @@ public final class SensorSnapshot {
         return bodyQuaternion[i];
     }
 
+    /**
+     * Ground truth: the body-frame point {@code body} (x, y, z) in the course frame, into {@code world} (3 numbers), m.
+     * For measuring and drawing, never for control.
+     */
+    public void groundTruthToWorld(double[] body, double[] world) {
+        double w = bodyQuaternion[0];
+        double x = bodyQuaternion[1];
+        double y = bodyQuaternion[2];
+        double z = bodyQuaternion[3];
+        double bx = body[0];
+        double by = body[1];
+        double bz = body[2];
+        world[0] = bodyPosition[0] + (1 - 2 * (y * y + z * z)) * bx + 2 * (x * y - w * z) * by + 2 * (x * z + w * y) * bz;
+        world[1] = bodyPosition[1] + 2 * (x * y + w * z) * bx + (1 - 2 * (x * x + z * z)) * by + 2 * (y * z - w * x) * bz;
+        world[2] = bodyPosition[2] + 2 * (x * z - w * y) * bx + 2 * (y * z + w * x) * by + (1 - 2 * (x * x + y * y)) * bz;
+    }
+
     /** Ground truth: the whole robot's centre of mass in the course frame, component {@code i}, m. */
     public double groundTruthCentreOfMass(int i) {
         return centreOfMass[i];

@@ -49,7 +49,8 @@ public final class RoqPainter {
     private BufferedImage shading;
     private final double[] leg = new double[12];
     private final double[] world = new double[12];
-    private final double[] rotation = new double[9];
+    private final double[] point = new double[3];
+    private final double[] pointInWorld = new double[3];
     private final double[] support = new double[2 * RoqGeometry.LEGS];
     private double[] path = new double[0];
     private int pathPoints;
@@ -79,7 +80,6 @@ public final class RoqPainter {
             Rectangle top = new Rectangle(bounds.x, bounds.y, viewWidth, topHeight);
             Rectangle side = new Rectangle(bounds.x, bounds.y + topHeight, viewWidth, bounds.height - topHeight);
             Rectangle panel = new Rectangle(bounds.x + viewWidth, bounds.y, panelWidth, bounds.height);
-            robotInWorld(s);
             paintTop(g2, s, terrain, top);
             paintSide(g2, s, terrain, side);
             paintPanel(g2, s, panel);
@@ -88,27 +88,13 @@ public final class RoqPainter {
         }
     }
 
-    /** Rotation matrix of the body and every leg's joints in the world frame, from the snapshot. */
-    private void robotInWorld(SensorSnapshot s) {
-        double w = s.groundTruthBodyQuaternion(0);
-        double x = s.groundTruthBodyQuaternion(1);
-        double y = s.groundTruthBodyQuaternion(2);
-        double z = s.groundTruthBodyQuaternion(3);
-        double[] r = rotation;
-        r[0] = 1 - 2 * (y * y + z * z);
-        r[1] = 2 * (x * y - w * z);
-        r[2] = 2 * (x * z + w * y);
-        r[3] = 2 * (x * y + w * z);
-        r[4] = 1 - 2 * (x * x + z * z);
-        r[5] = 2 * (y * z - w * x);
-        r[6] = 2 * (x * z - w * y);
-        r[7] = 2 * (y * z + w * x);
-        r[8] = 1 - 2 * (x * x + y * y);
-    }
-
     /** Body-frame point (bx, by, bz) to world, component {@code i}. */
     private double toWorld(SensorSnapshot s, double bx, double by, double bz, int i) {
-        return s.groundTruthBodyPosition(i) + rotation[3 * i] * bx + rotation[3 * i + 1] * by + rotation[3 * i + 2] * bz;
+        point[0] = bx;
+        point[1] = by;
+        point[2] = bz;
+        s.groundTruthToWorld(point, pointInWorld);
+        return pointInWorld[i];
     }
 
     private void legInWorld(SensorSnapshot s, int l) {

@@ -105,6 +105,11 @@ public final class BenchRoqCommand implements Callable<Integer> {
                     + " the parameter must be in the file), as fdnet run --param does")
     List<String> params = new ArrayList<>();
 
+    @Option(names = "--unload", split = ",", paramLabel = "MODULE",
+            description = "(breakthroughs) modules of --network to unload for the runs, e.g. Balance (the baseline"
+                    + " unloads Probing as well)")
+    List<String> unload = new ArrayList<>();
+
     /** The heading runs' default noise seeds: RoqCoursesTest's eight. */
     static final String HEADING_NOISE = "5,105,205,305,405,505,605,705";
 
@@ -191,10 +196,18 @@ public final class BenchRoqCommand implements Callable<Integer> {
                 if (definition == null) {
                     return 2;
                 }
+                for (String module : unload) {
+                    if (module.equals("main") || definition.module(module) == null) {
+                        System.err.println("fdnet bench roq: --unload " + module + ": " + definition.name()
+                                + " has no such module to unload");
+                        return 2;
+                    }
+                }
                 if (part.equals("heading")) {
                     new HeadingDriftBench(definition, seeds, headingSeconds, noises).run();
                 } else {
-                    new BreakthroughSweep(definition, CourseLoader.resolve(course), noises, sweepSeconds).run();
+                    new BreakthroughSweep(definition, CourseLoader.resolve(course), noises, sweepSeconds,
+                            unload.toArray(String[]::new)).run();
                 }
                 return 0;
             }

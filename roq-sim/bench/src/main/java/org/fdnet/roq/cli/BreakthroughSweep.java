@@ -1,11 +1,13 @@
 package org.fdnet.roq.cli;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.stream.Stream;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.roq.bridge.CourseRun;
 import org.fdnet.roq.sim.Course;
@@ -23,20 +25,26 @@ final class BreakthroughSweep {
     private final Course course;
     private final long[] noises;
     private final int seconds;
+    /** Modules unloaded in every run (the baseline unloads Probing as well). */
+    private final String[] unloaded;
     /** The baseline's sum, once {@link #run()} has run. */
     private Sum baseline;
 
-    BreakthroughSweep(NetworkInfo network, Course course, long[] noises, int seconds) {
+    BreakthroughSweep(NetworkInfo network, Course course, long[] noises, int seconds, String... unloaded) {
         this.network = network;
         this.course = course;
         this.noises = noises.clone();
         this.seconds = seconds;
+        this.unloaded = unloaded.clone();
     }
 
     /** Sums of one variant's runs. */
     record Sum(int runs, int loaded, int probeBroken, int withNone, int fallen, double walked, double leastWalked,
-               double track, double heading) {
+               double track, double heading, int swinging, int standing, int slid) {
         static Sum of(List<CourseRun> runs) {
+            int swinging = 0;
+            int standing = 0;
+            int slid = 0;
             int loaded = 0;
             int probe = 0;
             int none = 0;
@@ -47,6 +55,9 @@ final class BreakthroughSweep {
             double heading = 0;
             for (CourseRun r : runs) {
                 loaded += r.loadedBreakthroughs();
+                swinging += r.underSwingingFoot();
+                standing += r.underStandingFoot();
+                slid += r.slidSinceSetDown();
                 probe += r.probeBroken();
                 none += r.loadedBreakthroughs() == 0 ? 1 : 0;
                 fallen += r.fallen() ? 1 : 0;
@@ -55,32 +66,37 @@ final class BreakthroughSweep {
                 track = Math.max(track, r.trackError());
                 heading = Math.max(heading, r.headingError());
             }
-            return new Sum(runs.size(), loaded, probe, none, fallen, walked / runs.size(), least, track, heading);
+            return new Sum(runs.size(), loaded, probe, none, fallen, walked / runs.size(), least, track, heading,
+                    swinging, standing, slid);
         }
 
         String line(String label) {
-            return String.format(Locale.ROOT, "%s: %d loaded-foot breakthroughs over %d runs (%d runs with none), %d"
-                            + " cells broken by probes, %d fallen; walked %.3f m on average (least %.3f); off the line at"
-                            + " most %.3f m, off the heading at most %.3f rad", label, loaded, runs, withNone, probeBroken,
-                    fallen, walked, leastWalked, track, heading);
+            return String.format(Locale.ROOT, "%s: %d loaded-foot breakthroughs over %d runs (%d runs with none; under a"
+                            + " swinging foot %d, under a standing foot %d, of which slid 2 cm or more since set down %d),"
+                            + " %d cells broken by probes, %d fallen; walked %.3f m on average (least %.3f); off the line at"
+                            + " most %.3f m, off the heading at most %.3f rad", label, loaded, runs, withNone, swinging,
+                    standing, slid, probeBroken, fallen, walked, leastWalked, track, heading);
         }
     }
 
     /** Runs both variants on every seed, prints each run and the two sums; returns the network's. */
     Sum run() throws Exception {
-        System.out.printf(Locale.ROOT, "fdnet bench roq --part breakthroughs: %s on %s, %d simulated s per run, %d noise"
-                        + " seeds, stepped, two at a time; baseline: module Probing unloaded%n", network.name(),
-                course.name(), seconds, noises.length);
+        System.out.printf(Locale.ROOT, "fdnet bench roq --part breakthroughs: %s%s on %s, %d simulated s per run, %d"
+                        + " noise seeds, stepped, two at a time; baseline: module Probing unloaded%n", network.name(),
+                unloaded.length == 0 ? "" : " with " + String.join(", ", unloaded) + " unloaded", course.name(), seconds,
+                noises.length);
+        String[] withoutProbing = Stream.concat(Arrays.stream(unloaded), Stream.of("Probing")).distinct()
+                .toArray(String[]::new);
         ExecutorService pool = Executors.newFixedThreadPool(2);
         List<Future<CourseRun>> probed = new ArrayList<>();
         List<Future<CourseRun>> unprobed = new ArrayList<>();
         try {
             for (long noise : noises) {
-                probed.add(pool.submit(() -> CourseRun.of("noise " + noise, network, course, seconds, noise)));
+                probed.add(pool.submit(() -> CourseRun.of("noise " + noise, network, course, seconds, noise, unloaded)));
             }
             for (long noise : noises) {
                 unprobed.add(pool.submit(() -> CourseRun.of("noise " + noise + ", Probing unloaded", network, course,
-                        seconds, noise, "Probing")));
+                        seconds, noise, withoutProbing)));
             }
             List<CourseRun> with = collect(probed);
             List<CourseRun> without = collect(unprobed);

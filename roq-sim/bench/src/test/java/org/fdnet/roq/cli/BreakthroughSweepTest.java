@@ -31,6 +31,10 @@ class BreakthroughSweepTest {
         assertThat(unprobed.probeBroken()).as("without Probing no probe breaks a crust").isZero();
         assertThat(probed.loaded()).as("loaded-foot breakthroughs with Probing, against %d without", unprobed.loaded())
                 .isLessThan(unprobed.loaded());
+        // unprobed, crusts break under the feet that stand on them; each break is told at most once
+        assertThat(unprobed.standing()).as("without Probing, breaks under a standing foot").isPositive();
+        assertThat(unprobed.swinging() + unprobed.standing()).isLessThanOrEqualTo(unprobed.loaded());
+        assertThat(probed.swinging() + probed.standing()).isLessThanOrEqualTo(probed.loaded());
     }
 
     @Test

@@ -1,0 +1,123 @@
+package org.fdnet.roq.bridge;
+
+import static org.fdnet.roq.sim.RoqGeometry.LEGS;
+
+import java.util.List;
+import org.fdnet.roq.sim.FragileCell;
+
+/**
+ * Whose foot a loaded-foot breakthrough was under, by ground truth (for measuring, never for control): the fragile cell
+ * that broke while no probe pressed is matched to the foot nearest its footprint, and the break is told
+ * <ul>
+ *   <li><b>under a swinging foot</b> — the leg the gait phase has in the air (swinging or probing another foothold):
+ *   a foot driven along the ground or against a crust's face on its way forward;</li>
+ *   <li><b>under a standing foot</b> — and of those, the ones whose foot had <b>slid</b> at least {@link #SLID} m
+ *   since the gait last set it down: the probe tested another spot than the one that broke;</li>
+ *   <li><b>under no foot</b> — none within {@link #REACH} m of the cell (the body, a shank).</li>
+ * </ul>
+ *
+ * <pre>
+ *   every sample: feet (world x, y), gait phase {leg, in the air, probe attempt}
+ *       └─▶ a leg coming down: where its foot was set down
+ *   a cell broken while no probe pressed ─▶ nearest foot ─▶ swinging / standing (slid or not) / none
+ * </pre>
+ */
+public final class BreakthroughCauses {
+    /** How far from a cell's footprint a foot's centre may be and still stand on it, m (the foot's 3 cm radius + 1 cm). */
+    static final double REACH = 0.04;
+    /** How far a standing foot must have moved since it was set down to count as slid, m. */
+    static final double SLID = 0.02;
+
+    private final List<FragileCell> cells;
+    private final boolean[] known;
+    private final double[] setDown = new double[2 * LEGS];
+    private final boolean[] setDownKnown = new boolean[LEGS];
+    private int upLeg = -1;
+    private int swinging;
+    private int standing;
+    private int slid;
+    private int noFoot;
+
+    /** Tells the breaks of {@code cells} (the course's fragile cells, in their order). */
+    public BreakthroughCauses(List<FragileCell> cells) {
+        this.cells = List.copyOf(cells);
+        this.known = new boolean[cells.size()];
+    }
+
+    /**
+     * One sample: {@code feet} the feet's world (x, y), 8 numbers; {@code upLeg} the leg the gait phase has in the
+     * air or probing (−1: all four down); {@code broken} whether each cell is broken now; {@code probing} whether a
+     * probe presses now (a new break then is the probe's, not counted here).
+     */
+    public void sample(double[] feet, int upLeg, boolean[] broken, boolean probing) {
+        if (this.upLeg >= 0 && this.upLeg != upLeg) {
+            setDown[2 * this.upLeg] = feet[2 * this.upLeg];
+            setDown[2 * this.upLeg + 1] = feet[2 * this.upLeg + 1];
+            setDownKnown[this.upLeg] = true;
+        }
+        this.upLeg = upLeg;
+        for (int i = 0; i < known.length; i++) {
+            if (broken[i] && !known[i]) {
+                known[i] = true;
+                if (!probing) {
+                    tell(cells.get(i), feet, upLeg);
+                }
+            }
+        }
+    }
+
+    private void tell(FragileCell cell, double[] feet, int upLeg) {
+        int leg = -1;
+        double nearest = REACH;
+        for (int l = 0; l < LEGS; l++) {
+            double d = outside(cell, feet[2 * l], feet[2 * l + 1]);
+            if (d <= nearest) {
+                nearest = d;
+                leg = l;
+            }
+        }
+        if (leg < 0) {
+            noFoot++;
+        } else if (leg == upLeg) {
+            swinging++;
+        } else {
+            standing++;
+            if (setDownKnown[leg] && Math.hypot(feet[2 * leg] - setDown[2 * leg],
+                    feet[2 * leg + 1] - setDown[2 * leg + 1]) >= SLID) {
+                slid++;
+            }
+        }
+    }
+
+    /** How far (x, y) lies outside {@code cell}'s footprint, m (0 on it). */
+    private static double outside(FragileCell cell, double x, double y) {
+        return Math.hypot(Math.max(0, Math.abs(x - cell.x()) - cell.sizeX() / 2),
+                Math.max(0, Math.abs(y - cell.y()) - cell.sizeY() / 2));
+    }
+
+    /** Loaded-foot breakthroughs under the foot of the leg in the air. */
+    public int swinging() {
+        return swinging;
+    }
+
+    /** Loaded-foot breakthroughs under a standing foot. */
+    public int standing() {
+        return standing;
+    }
+
+    /** Of {@link #standing()}, those whose foot had slid at least {@link #SLID} m since it was set down. */
+    public int slid() {
+        return slid;
+    }
+
+    /** Loaded-foot breakthroughs with no foot within {@link #REACH} m of the cell. */
+    public int noFoot() {
+        return noFoot;
+    }
+
+    /** "under a swinging foot S, under a standing foot T (slid since set down D)[, under no foot N]". */
+    public String summary() {
+        return "under a swinging foot " + swinging + ", under a standing foot " + standing + " (slid since set down "
+                + slid + ")" + (noFoot > 0 ? ", under no foot " + noFoot : "");
+    }
+}

@@ -115,9 +115,9 @@ public final class BreakthroughCauses {
         return noFoot;
     }
 
-    /** "under a swinging foot S, under a standing foot T (slid since set down D)[, under no foot N]". */
+    /** "under a swinging foot S, under a standing foot T, D of them slid since set down[, under no foot N]". */
     public String summary() {
-        return "under a swinging foot " + swinging + ", under a standing foot " + standing + " (slid since set down "
-                + slid + ")" + (noFoot > 0 ? ", under no foot " + noFoot : "");
+        return "under a swinging foot " + swinging + ", under a standing foot " + standing + ", " + slid
+                + " of them slid since set down" + (noFoot > 0 ? ", under no foot " + noFoot : "");
     }
 }

@@ -30,7 +30,7 @@ class BreakthroughCausesTest {
         causes.sample(feet(0.9, 0.3, 1.0, -0.3), 3, BOTH, false); // hind-right swinging, front-right stands on cell 1
         assertThat(causes.swinging()).isEqualTo(1);
         assertThat(causes.standing()).isEqualTo(1);
-        assertThat(causes.summary()).isEqualTo("under a swinging foot 1, under a standing foot 1 (slid since set down 0)");
+        assertThat(causes.summary()).isEqualTo("under a swinging foot 1, under a standing foot 1, 0 of them slid since set down");
     }
 
     @Test

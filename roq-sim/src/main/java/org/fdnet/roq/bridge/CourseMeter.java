@@ -76,7 +76,7 @@ public final class CourseMeter {
     /** Takes one sample (every 10 ms): {@code s} now and the network whose gait phase tells a probe's press. */
     public void sample(SensorSnapshot s, RuntimeNetwork network) {
         Value phase = phase(network);
-        boolean probing = phase != null && phase.length() == 3 && phase.element(2) > 0;
+        boolean probing = presses(phase);
         if (causes != null) {
             boolean up = phase != null && phase.length() >= 2 && (phase.element(1) > 0 || probing);
             causes.sample(feetInWorld(s), up ? (int) phase.element(0) : -1, brokenCells(s), probing);
@@ -132,7 +132,11 @@ public final class CourseMeter {
 
     /** Whether {@code network}'s gait phase says a probe presses now (false without such a Data). */
     static boolean probing(RuntimeNetwork network) {
-        Value phase = phase(network);
+        return presses(phase(network));
+    }
+
+    /** Whether gait phase {@code phase} {leg, in the air, probe attempt} says a probe presses (false for null). */
+    private static boolean presses(Value phase) {
         return phase != null && phase.length() == 3 && phase.element(2) > 0;
     }
 

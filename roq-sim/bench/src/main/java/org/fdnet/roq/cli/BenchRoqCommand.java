@@ -182,6 +182,11 @@ public final class BenchRoqCommand implements Callable<Integer> {
                     + headingSeconds);
             return 2;
         }
+        if (!unload.isEmpty() && !part.equals("breakthroughs")) {
+            System.err.println("fdnet bench roq: --unload applies to --part breakthroughs only, was given with --part "
+                    + part);
+            return 2;
+        }
         try {
             if (part.equals("push")) {
                 NetworkInfo definition = load(reflexNetwork);

@@ -26,6 +26,13 @@ class BenchRoqCommandTest {
         assertThat(err).contains("--unload main:");
     }
 
+    @Test
+    void shouldRefuseUnloadWithAPartThatWouldIgnoreIt() {
+        String err = refused("--part", "heading", "--network", NETWORK, "--unload", "Balance");
+        assertThat(err.strip()).isEqualTo(
+                "fdnet bench roq: --unload applies to --part breakthroughs only, was given with --part heading");
+    }
+
     /** Runs the command with {@code args}, asserts it exits 2, and returns what it wrote to standard error. */
     private static String refused(String... args) {
         ByteArrayOutputStream captured = new ByteArrayOutputStream();

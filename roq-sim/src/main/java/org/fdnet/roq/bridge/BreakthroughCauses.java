@@ -26,7 +26,7 @@ public final class BreakthroughCauses {
     /** How far from a cell's footprint a foot's centre may be and still stand on it, m (the foot's 3 cm radius + 1 cm). */
     static final double REACH = 0.04;
     /** How far a standing foot must have moved since it was set down to count as slid, m. */
-    static final double SLID = 0.02;
+    public static final double SLID = 0.02;
 
     private final List<FragileCell> cells;
     private final boolean[] known;
@@ -70,7 +70,7 @@ public final class BreakthroughCauses {
         int leg = -1;
         double nearest = REACH;
         for (int l = 0; l < LEGS; l++) {
-            double d = outside(cell, feet[2 * l], feet[2 * l + 1]);
+            double d = cell.distanceOutside(feet[2 * l], feet[2 * l + 1]);
             if (d <= nearest) {
                 nearest = d;
                 leg = l;
@@ -87,12 +87,6 @@ public final class BreakthroughCauses {
                 slid++;
             }
         }
-    }
-
-    /** How far (x, y) lies outside {@code cell}'s footprint, m (0 on it). */
-    private static double outside(FragileCell cell, double x, double y) {
-        return Math.hypot(Math.max(0, Math.abs(x - cell.x()) - cell.sizeX() / 2),
-                Math.max(0, Math.abs(y - cell.y()) - cell.sizeY() / 2));
     }
 
     /** Loaded-foot breakthroughs under the foot of the leg in the air. */

@@ -35,8 +35,8 @@ import org.fdnet.runtime.engine.RuntimeStartException;
  * @param loadedBreakthroughs   cells that broke while no probe pressed: under a foot that had been accepted and loaded
  * @param underSwingingFoot     of those, under the foot of the leg in the air ({@link BreakthroughCauses})
  * @param underStandingFoot     of those, under a standing foot
- * @param slidSinceSetDown      of those under a standing foot, the ones whose foot had slid 2 cm or more since it was
- *                              set down
+ * @param slidSinceSetDown      of those under a standing foot, the ones whose foot had slid
+ *                              {@link BreakthroughCauses#SLID} m or more since it was set down
  */
 public record CourseRun(String label, double distance, double trackError, double headingError, double finalHeading,
                  double tilt, boolean fallen, int probeBroken, int loadedBreakthroughs, int underSwingingFoot,

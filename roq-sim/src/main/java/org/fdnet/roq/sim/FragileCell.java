@@ -37,6 +37,11 @@ public record FragileCell(double x, double y, double sizeX, double sizeY, double
         }
     }
 
+    /** How far (px, py) lies outside this cell's footprint, m (0 on it). */
+    public double distanceOutside(double px, double py) {
+        return Math.hypot(Math.max(0, Math.abs(px - x) - sizeX / 2), Math.max(0, Math.abs(py - y) - sizeY / 2));
+    }
+
     /** Whether (px, py) lies on this cell. */
     public boolean contains(double px, double py) {
         return Math.abs(px - x) <= sizeX / 2 && Math.abs(py - y) <= sizeY / 2;

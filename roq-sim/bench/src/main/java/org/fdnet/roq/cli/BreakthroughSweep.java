@@ -9,6 +9,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.stream.Stream;
 import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.roq.bridge.BreakthroughCauses;
 import org.fdnet.roq.bridge.CourseRun;
 import org.fdnet.roq.sim.Course;
 
@@ -72,10 +73,11 @@ final class BreakthroughSweep {
 
         String line(String label) {
             return String.format(Locale.ROOT, "%s: %d loaded-foot breakthroughs over %d runs (%d runs with none; under a"
-                            + " swinging foot %d, under a standing foot %d, of which slid 2 cm or more since set down %d),"
-                            + " %d cells broken by probes, %d fallen; walked %.3f m on average (least %.3f); off the line at"
-                            + " most %.3f m, off the heading at most %.3f rad", label, loaded, runs, withNone, swinging,
-                    standing, slid, probeBroken, fallen, walked, leastWalked, track, heading);
+                            + " swinging foot %d, under a standing foot %d, of which slid %.0f cm or more since set down"
+                            + " %d), %d cells broken by probes, %d fallen; walked %.3f m on average (least %.3f); off the"
+                            + " line at most %.3f m, off the heading at most %.3f rad", label, loaded, runs, withNone,
+                    swinging, standing, BreakthroughCauses.SLID * 100, slid, probeBroken, fallen, walked, leastWalked,
+                    track, heading);
         }
     }
 

@@ -6,20 +6,24 @@ import java.util.List;
 import org.fdnet.roq.sim.FragileCell;
 
 /**
- * Whose foot a loaded-foot breakthrough was under, by ground truth (for measuring, never for control): the fragile cell
- * that broke while no probe pressed is matched to the foot nearest its footprint, and the break is told
+ * Which fragile cells a probe broke on purpose and, for the others — the loaded-foot breakthroughs — whose foot they
+ * were under, by ground truth (for measuring, never for control). Every cell that breaks is matched to the foot nearest
+ * its footprint (within {@link #REACH} m). It is the <b>probe's</b> only when a probe presses and that foot is the
+ * probed one; any other break is a loaded-foot breakthrough, told
  * <ul>
- *   <li><b>under a swinging foot</b> — the leg the gait phase has in the air (swinging or probing another foothold):
- *   a foot driven along the ground or against a crust's face on its way forward;</li>
- *   <li><b>under a standing foot</b> — and of those, the ones whose foot had <b>slid</b> at least {@link #SLID} m
- *   since the gait last set it down: the probe tested another spot than the one that broke;</li>
+ *   <li><b>under a swinging foot</b> — the leg the gait phase has in the air (swinging, not pressing): a foot driven
+ *   along the ground or against a crust's face on its way forward;</li>
+ *   <li><b>under a standing foot</b> — also while another foot's probe presses (the press and the lean that goes with
+ *   it shift the weight between the standing feet) — and of those, the ones whose foot had <b>slid</b> at least
+ *   {@link #SLID} m since the gait last set it down: the probe tested another spot than the one that broke;</li>
  *   <li><b>under no foot</b> — none within {@link #REACH} m of the cell (the body, a shank).</li>
  * </ul>
  *
  * <pre>
  *   every sample: feet (world x, y), gait phase {leg, in the air, probe attempt}
  *       └─▶ a leg coming down: where its foot was set down
- *   a cell broken while no probe pressed ─▶ nearest foot ─▶ swinging / standing (slid or not) / none
+ *   a cell newly broken ─▶ nearest foot ─▶ the probed one while it presses: the probe's
+ *                                       └▶ otherwise: swinging / standing (slid or not) / none
  * </pre>
  */
 public final class BreakthroughCauses {
@@ -33,6 +37,7 @@ public final class BreakthroughCauses {
     private final double[] setDown = new double[2 * LEGS];
     private final boolean[] setDownKnown = new boolean[LEGS];
     private int upLeg = -1;
+    private int probeBroken;
     private int swinging;
     private int standing;
     private int slid;
@@ -44,10 +49,22 @@ public final class BreakthroughCauses {
         this.known = new boolean[cells.size()];
     }
 
+    /** Whether there are cells to tell (a course without fragile cells has no breaks). */
+    public boolean hasCells() {
+        return !cells.isEmpty();
+    }
+
+    /** Leaves the cells {@code broken} already (when measuring starts) out of every count. */
+    public void alreadyBroken(boolean[] broken) {
+        for (int i = 0; i < known.length; i++) {
+            known[i] |= broken[i];
+        }
+    }
+
     /**
      * One sample: {@code feet} the feet's world (x, y), 8 numbers; {@code upLeg} the leg the gait phase has in the
-     * air or probing (−1: all four down); {@code broken} whether each cell is broken now; {@code probing} whether a
-     * probe presses now (a new break then is the probe's, not counted here).
+     * air or probing (−1: all four down); {@code broken} whether each cell is broken now; {@code probing} whether
+     * {@code upLeg}'s probe presses now (a new break under that foot is then the probe's).
      */
     public void sample(double[] feet, int upLeg, boolean[] broken, boolean probing) {
         if (this.upLeg >= 0 && this.upLeg != upLeg) {
@@ -59,14 +76,12 @@ public final class BreakthroughCauses {
         for (int i = 0; i < known.length; i++) {
             if (broken[i] && !known[i]) {
                 known[i] = true;
-                if (!probing) {
-                    tell(cells.get(i), feet, upLeg);
-                }
+                tell(cells.get(i), feet, upLeg, probing);
             }
         }
     }
 
-    private void tell(FragileCell cell, double[] feet, int upLeg) {
+    private void tell(FragileCell cell, double[] feet, int upLeg, boolean probing) {
         int leg = -1;
         double nearest = REACH;
         for (int l = 0; l < LEGS; l++) {
@@ -76,7 +91,9 @@ public final class BreakthroughCauses {
                 leg = l;
             }
         }
-        if (leg < 0) {
+        if (probing && leg == upLeg && leg >= 0) {
+            probeBroken++;
+        } else if (leg < 0) {
             noFoot++;
         } else if (leg == upLeg) {
             swinging++;
@@ -87,6 +104,16 @@ public final class BreakthroughCauses {
                 slid++;
             }
         }
+    }
+
+    /** Cells broken under the probed foot while its probe pressed, on purpose. */
+    public int probeBroken() {
+        return probeBroken;
+    }
+
+    /** Every other break: the loaded-foot breakthroughs, under any foot or none. */
+    public int loaded() {
+        return swinging + standing + noFoot;
     }
 
     /** Loaded-foot breakthroughs under the foot of the leg in the air. */

@@ -16,13 +16,15 @@ import org.fdnet.runtime.engine.RuntimeNetwork;
  * a cycle by design), and which fragile cells broke under a probe and which under a loaded foot.
  *
  * <pre>
- *   snapshot (ground truth y, yaw, broken cells) ─┐
- *   the network's "gait phase" {leg, swing, probe} ┴─▶ sample() ──▶ track / heading errors, max and at the end
- *                                                                 └▶ probe-broken cells / loaded-foot breakthroughs
+ *   snapshot (ground truth y, yaw, feet, broken cells) ─┐
+ *   the network's "gait phase" {leg, swing, probe}      ┴─▶ sample() ──▶ track / heading errors, max and at the end
+ *                                                                      └▶ BreakthroughCauses: probe-broken cells /
+ *                                                                         loaded-foot breakthroughs and whose foot
  * </pre>
  *
- * <p>A cell that breaks while the gait phase says a probe presses (its third element above 0) was broken by the
- * probe, on purpose; any other was broken under a foot that had been accepted and loaded.
+ * <p>A cell that breaks under the probed foot while the gait phase says its probe presses (its third element above
+ * 0) was broken by the probe, on purpose; any other — under another foot during a press too — was broken under a foot
+ * that had been accepted and loaded ({@link BreakthroughCauses}).
  */
 public final class CourseMeter {
     /** Samples (10 ms each) over which the track and heading are averaged: 4.5 s, roq-rubble's crawl cycle. */
@@ -40,49 +42,39 @@ public final class CourseMeter {
     private int samples;
     private double maxTrack;
     private double maxHeading;
-    private int broken;
-    private int probeBroken;
-    private int loadedBreakthroughs;
-    /** Whose foot each loaded-foot breakthrough was under (null: the cells are not known). */
+    /** Which cells the probes broke and whose foot each loaded-foot breakthrough was under. */
     private final BreakthroughCauses causes;
     private final double[] foot = new double[3];
     private final double[] world = new double[3];
     private final double[] feet = new double[2 * RoqGeometry.LEGS];
     private final boolean[] brokenNow;
 
-    /** Starts measuring from {@code start}: its position across and its heading are the course line's. */
-    public CourseMeter(SensorSnapshot start) {
-        this(start, List.of());
-    }
-
-    /** Starts measuring from {@code start} on a course with fragile {@code cells}, telling whose foot broke them. */
+    /**
+     * Starts measuring from {@code start} on a course with fragile {@code cells} (the course's, in their order; cells
+     * broken already are left out): its position across and its heading are the course line's.
+     */
     public CourseMeter(SensorSnapshot start, List<FragileCell> cells) {
-        this(start.groundTruthBodyPosition(1), start.groundTruthYaw(), start.brokenCellCount(), cells);
+        this(start.groundTruthBodyPosition(1), start.groundTruthYaw(), cells);
+        causes.alreadyBroken(brokenCells(start));
     }
 
-    /** Starts measuring from the course line at {@code y0} heading {@code yaw0}, {@code broken} cells broken so far. */
-    CourseMeter(double y0, double yaw0, int broken) {
-        this(y0, yaw0, broken, List.of());
-    }
-
-    private CourseMeter(double y0, double yaw0, int broken, List<FragileCell> cells) {
+    /** Starts measuring from the course line at {@code y0} heading {@code yaw0} on a course with fragile {@code cells}. */
+    CourseMeter(double y0, double yaw0, List<FragileCell> cells) {
         this.y0 = y0;
         this.yaw0 = yaw0;
-        this.broken = broken;
-        this.causes = cells.isEmpty() ? null : new BreakthroughCauses(cells);
+        this.causes = new BreakthroughCauses(cells);
         this.brokenNow = new boolean[cells.size()];
     }
 
     /** Takes one sample (every 10 ms): {@code s} now and the network whose gait phase tells a probe's press. */
     public void sample(SensorSnapshot s, RuntimeNetwork network) {
-        Value phase = phase(network);
-        boolean probing = presses(phase);
-        if (causes != null) {
+        if (causes.hasCells()) {
+            Value phase = phase(network);
+            boolean probing = presses(phase);
             boolean up = phase != null && phase.length() >= 2 && (phase.element(1) > 0 || probing);
             causes.sample(feetInWorld(s), up ? (int) phase.element(0) : -1, brokenCells(s), probing);
         }
-        boolean newBreak = s.brokenCellCount() > broken;
-        sample(s.groundTruthBodyPosition(1), s.groundTruthYaw(), s.brokenCellCount(), newBreak && probing);
+        sample(s.groundTruthBodyPosition(1), s.groundTruthYaw());
     }
 
     /** The feet's centres in the world frame (x, y per foot) by ground truth and the measured joint angles. */
@@ -103,11 +95,8 @@ public final class CourseMeter {
         return brokenNow;
     }
 
-    /**
-     * One sample: the body at {@code y} heading {@code yaw} (ground truth), {@code brokenCells} broken so far, and
-     * whether a probe presses now.
-     */
-    void sample(double y, double yaw, int brokenCells, boolean probing) {
+    /** One sample of the track and heading: the body at {@code y} heading {@code yaw} (ground truth). */
+    void sample(double y, double yaw) {
         int slot = samples % WINDOW;
         double across = y - y0;
         sumY += across - lastY[slot];
@@ -119,14 +108,6 @@ public final class CourseMeter {
         if (samples >= WINDOW) {
             maxTrack = Math.max(maxTrack, Math.abs(endTrack()));
             maxHeading = Math.max(maxHeading, Math.abs(endHeading()));
-        }
-        if (brokenCells > broken) {
-            if (probing) {
-                probeBroken += brokenCells - broken;
-            } else {
-                loadedBreakthroughs += brokenCells - broken;
-            }
-            broken = brokenCells;
         }
     }
 
@@ -169,17 +150,17 @@ public final class CourseMeter {
         return samples == 0 ? 0 : sumYaw / Math.min(samples, WINDOW);
     }
 
-    /** Cells broken while a probe pressed on them, on purpose. */
+    /** Cells broken under the probed foot while its probe pressed, on purpose. */
     public int probeBroken() {
-        return probeBroken;
+        return causes.probeBroken();
     }
 
-    /** Cells broken while no probe pressed: under a foot that had been accepted and loaded. */
+    /** Every other broken cell: under a foot that had been accepted and loaded. */
     public int loadedBreakthroughs() {
-        return loadedBreakthroughs;
+        return causes.loaded();
     }
 
-    /** Whose foot the loaded-foot breakthroughs were under; null when the meter was not given the course's cells. */
+    /** Whose foot the loaded-foot breakthroughs were under. */
     public BreakthroughCauses causes() {
         return causes;
     }
@@ -188,8 +169,8 @@ public final class CourseMeter {
     public String summary() {
         return String.format(Locale.ROOT, "cells broken by probes %d, loaded-foot breakthroughs %d%s; off the course"
                         + " line max %.3f m, at the end %.3f m; heading error max %.3f rad, at the end %.3f rad"
-                        + " (ground truth, each averaged over a %.1f s crawl cycle)", probeBroken, loadedBreakthroughs,
-                causes == null || loadedBreakthroughs == 0 ? "" : " (" + causes.summary() + ")",
+                        + " (ground truth, each averaged over a %.1f s crawl cycle)", probeBroken(), loadedBreakthroughs(),
+                loadedBreakthroughs() == 0 ? "" : " (" + causes.summary() + ")",
                 maxTrack, endTrack(), maxHeading, endHeading(), WINDOW / 100.0);
     }
 

@@ -31,8 +31,8 @@ import org.fdnet.runtime.engine.RuntimeStartException;
  * @param finalHeading          yaw at the end minus at the start, rad
  * @param tilt                  largest |roll| or |pitch|, rad
  * @param fallen                FallDetector's latch at the end
- * @param probeBroken           cells that broke while a probe pressed (on purpose)
- * @param loadedBreakthroughs   cells that broke while no probe pressed: under a foot that had been accepted and loaded
+ * @param probeBroken           cells that broke under the probed foot while its probe pressed (on purpose)
+ * @param loadedBreakthroughs   every other broken cell: under a foot that had been accepted and loaded
  * @param underSwingingFoot     of those, under the foot of the leg in the air ({@link BreakthroughCauses})
  * @param underStandingFoot     of those, under a standing foot
  * @param slidSinceSetDown      of those under a standing foot, the ones whose foot had slid
@@ -70,8 +70,7 @@ public record CourseRun(String label, double distance, double trackError, double
             return new CourseRun(label, s.groundTruthBodyPosition(0) - x0, meter.maxTrackError(),
                     meter.maxHeadingError(), CourseMeter.angle(s.groundTruthYaw() - yaw0), tilt,
                     fallen != null && fallen.asBoolean(), meter.probeBroken(), meter.loadedBreakthroughs(),
-                    causes == null ? 0 : causes.swinging(), causes == null ? 0 : causes.standing(),
-                    causes == null ? 0 : causes.slid());
+                    causes.swinging(), causes.standing(), causes.slid());
         }
     }
 

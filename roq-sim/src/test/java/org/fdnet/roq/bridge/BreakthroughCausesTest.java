@@ -45,12 +45,34 @@ class BreakthroughCausesTest {
     }
 
     @Test
-    void shouldLeaveABreakDuringAProbesPressAndOneUnderNoFootApart() {
+    void shouldLeaveABreakUnderTheProbedFootAndOneUnderNoFootApart() {
         BreakthroughCauses causes = new BreakthroughCauses(CELLS);
-        causes.sample(feet(1.0, 0.3, 0.5, -0.3), 0, FIRST, true); // the probe broke cell 0: not a breakthrough
+        causes.sample(feet(1.0, 0.3, 0.5, -0.3), 0, FIRST, true); // front-left's probe broke cell 0: on purpose
+        assertThat(causes.probeBroken()).isEqualTo(1);
+        assertThat(causes.loaded()).isZero();
         causes.sample(feet(1.0, 0.3, 0.5, -0.3), 0, BOTH, false); // cell 1 broke with no foot within 4 cm of it
         assertThat(causes.swinging() + causes.standing()).isZero();
         assertThat(causes.noFoot()).isEqualTo(1);
+        assertThat(causes.loaded()).isEqualTo(1);
         assertThat(causes.summary()).endsWith(", under no foot 1");
+    }
+
+    @Test
+    void shouldCountABreakUnderAStandingFootDuringAnotherFootsPressAsALoadedFootBreakthrough() {
+        BreakthroughCauses causes = new BreakthroughCauses(CELLS);
+        causes.sample(feet(1.3, 0.3, 1.0, -0.3), 0, NONE, true); // front-left presses ahead of cell 0; front-right stands on cell 1
+        causes.sample(feet(1.3, 0.3, 1.0, -0.3), 0, new boolean[] {false, true}, true);
+        assertThat(causes.probeBroken()).as("not under the probed foot").isZero();
+        assertThat(causes.standing()).isEqualTo(1);
+        assertThat(causes.loaded()).isEqualTo(1);
+    }
+
+    @Test
+    void shouldLeaveCellsBrokenBeforeMeasuringStartedOut() {
+        BreakthroughCauses causes = new BreakthroughCauses(CELLS);
+        causes.alreadyBroken(FIRST);
+        causes.sample(feet(1.0, 0.3, 1.0, -0.3), -1, BOTH, false); // front-right stands on cell 1 as it breaks
+        assertThat(causes.loaded()).as("cell 0 was broken before; cell 1 broke now").isEqualTo(1);
+        assertThat(causes.probeBroken()).isZero();
     }
 }

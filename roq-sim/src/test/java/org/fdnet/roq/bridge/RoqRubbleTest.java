@@ -27,10 +27,11 @@ import org.junit.jupiter.api.Timeout;
 class RoqRubbleTest {
     private static final Path RUBBLE = Path.of("..", "networks", "roq-rubble.fdn");
 
-    /** What a run saw, counted each 10 ms. */
     /**
-     * @param cellsFoundByProbe  ground truth: cells that broke while a probe pressed and whose foothold the probe then
-     *                           rejected
+     * What a run saw, counted each 10 ms.
+     *
+     * @param brokenWhileLoaded  ground truth ({@link CourseMeter}): cells broken other than under a pressing probe
+     * @param cellsFoundByProbe  cells that broke under a pressing probe whose foothold the probe then rejected
      * @param cellsRetried       shorter steps the same leg probed next after such a rejection
      * @param cellsAvoided       of those, the ones where that shorter step was accepted
      */
@@ -52,11 +53,10 @@ class RoqRubbleTest {
             SimBridge bridge = SimBridge.stepped(net, sim, 0, 1);
             bridge.run(1);
             double x0 = bridge.lastSnapshot().groundTruthBodyPosition(0);
+            CourseMeter meter = new CourseMeter(bridge.lastSnapshot(), course.fragileCells());
             long lastAttempt = 0;
             int rejected = 0;
             int accepted = 0;
-            int broken = 0;
-            int brokenWhileLoaded = 0;
             boolean fallen = false;
             long brokeDuringAttempt = -1;
             int foundLeg = -1;
@@ -89,21 +89,15 @@ class RoqRubbleTest {
                         foundLeg = -1;
                     }
                 }
-                int nowBroken = bridge.lastSnapshot().brokenCellCount();
-                if (nowBroken > broken) {
-                    Value phase = value(net, "gait phase", "main");
-                    boolean probing = phase != null && phase.length() == 3 && phase.element(2) > 0;
-                    if (!probing) {
-                        brokenWhileLoaded += nowBroken - broken;
-                    } else {
-                        brokeDuringAttempt = (long) phase.element(2);
-                    }
-                    broken = nowBroken;
+                int probeBroken = meter.probeBroken();
+                meter.sample(bridge.lastSnapshot(), net);
+                if (meter.probeBroken() > probeBroken) {
+                    brokeDuringAttempt = (long) value(net, "gait phase", "main").element(2); // under the pressing foot
                 }
                 fallen |= value(net, "fallen", "main").asBoolean();
             }
-            return new Run(bridge.lastSnapshot().groundTruthBodyPosition(0) - x0, fallen, rejected, accepted, broken,
-                    brokenWhileLoaded, count(net, "fragile found"), count(net, "fragile avoided"), cellsFoundByProbe,
+            return new Run(bridge.lastSnapshot().groundTruthBodyPosition(0) - x0, fallen, rejected, accepted,
+                    meter.probeBroken() + meter.loadedBreakthroughs(), meter.loadedBreakthroughs(), count(net, "fragile found"), count(net, "fragile avoided"), cellsFoundByProbe,
                     cellsRetried, cellsAvoided);
         }
     }

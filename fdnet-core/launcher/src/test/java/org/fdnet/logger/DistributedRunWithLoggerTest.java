@@ -91,7 +91,7 @@ class DistributedRunWithLoggerTest {
     }
 
     /**
-     * Issue #20's count: one network run in the database, its three hosts as three streams filed under it, each
+     * What a distributed run leaves in the database: one network run in the database, its three hosts as three streams filed under it, each
      * Data once (on its home host; no stand-in of it anywhere), every stream's rows exactly what its host says the
      * logger committed, and every Data's values stored once each, in the order its home host wrote them. To make
      * that order checkable each value must say where it stands, so {@code --param} gives the three Relations

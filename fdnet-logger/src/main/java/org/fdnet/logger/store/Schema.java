@@ -31,7 +31,7 @@ public final class Schema {
                 + " run_id integer NOT NULL REFERENCES fdnet_run (run_id), local_id integer NOT NULL,"
                 + " kind text, module text, node text, named_at bigint, UNIQUE (run_id, local_id))",
         "CREATE SEQUENCE IF NOT EXISTS fdnet_sourceid_block INCREMENT BY " + SOURCE_BLOCK + " START WITH 1",
-        // Schema 2 (issue #20): one network run over several hosts. Each fdnet_run row is one core's stream of
+        // Schema 2: one network run over several hosts. Each fdnet_run row is one core's stream of
         // events; the streams of one network run (one per host) point at its fdnet_network_run row. Added in
         // place, so a database of schema 1 keeps every row: its streams have no network run (each is a run of
         // its own, named by its core_name) and no host.

@@ -98,9 +98,8 @@ public final class BatchWriter implements Runnable {
 
     /**
      * The Java priority of the threads that write: the maximum at the critical level with {@code priority.enabled},
-     * else normal. (Tried in session 6: the minimum below the critical level, nice 4 as root — on a machine with
-     * other work at nice 0 the writer then got too little of the CPU: bench logger's sustained rate fell from
-     * 735,000 to 330,000-420,000 events/s under the same load.)
+     * else normal. Not lower than normal: at the minimum (nice 4 as root) a machine with other work at nice 0 gives
+     * the writer too little of the CPU, and bench logger's sustained rate falls by about half under the same load.
      */
     public static int bulkPriority(boolean enabled, boolean critical) {
         return enabled && critical ? Thread.MAX_PRIORITY : Thread.NORM_PRIORITY;

@@ -36,8 +36,8 @@ import org.fdnet.runtime.Value;
  *   <li>once the caught foot is down (its sole, input {@code foot forces}, carries more than 20 N; at once when no
  *   foot was in the air or the soles are not read), the share {@code unlean} (0..1, default 0) of Balance's lean is
  *   taken back: with four feet down the whole rectangle is the support, and the lean towards the three-foot
- *   triangle's centroid (up to 15 cm) only brings the body nearer the edges on its side — sideways and backwards,
- *   where session 5's network survived smaller pushes than RoQ without Balance. Before the foot is down the lean is
+ *   triangle's centroid (up to 15 cm) only brings the body nearer the edges on its side, so that sideways and
+ *   backwards a network that kept the lean survives smaller pushes than RoQ without Balance. Before the foot is down the lean is
  *   what keeps the body over the triangle. It reads Balance's latest shift on every firing, so Balance, still
  *   integrating, cannot pull the body back while the brace holds.</li>
  * </ul>
@@ -47,7 +47,7 @@ import org.fdnet.runtime.Value;
  * so the body does not lurch back. The correction is written only when it changes; "caught leg L at t s" is
  * reported on each trigger. The report is built before the firing's outputs are committed (the engine commits them
  * when {@code compute} returns), so it is appended to a kept builder: a string concatenation's first run links its
- * call site, and that cost 2.6–3.4 ms on the reflex's first catch (bench roq (b) --trace, session 6).
+ * call site, which costs milliseconds on the reflex's first catch ({@code bench roq --part b --trace} shows it).
  */
 public class TiltReflex extends Relation {
     private static final int ATTITUDE = 0;

@@ -19,7 +19,7 @@ import org.fdnet.roq.node.RoqSensor;
 import org.junit.jupiter.api.Test;
 
 /**
- * The rule of issue #19: RoQ's Relations act on what a real RoQ could sense. Ground truth — the body's position and
+ * The sensing rule: RoQ's Relations act on what a real RoQ could sense. Ground truth — the body's position and
  * the centre of mass, which only the simulator knows — is there for measurement and tests; no Relation in any
  * shipped network may read it.
  */

@@ -24,11 +24,11 @@ import org.slf4j.LoggerFactory;
  * roq-rubble.fdn (and roq-walk.fdn on level ground) on every built-in course and on courses it was not tuned on —
  * five rubble seeds with blocks up to 6 cm, 15° up and down — stepped, with seeded sensor noise as in the demo. Every
  * run must keep RoQ up (FallDetector), break no cell under a loaded foot (up to 2 a run on {@code fragile} and
- * {@code crossing}: issue #19's "none" does not hold yet), stay near its course line and heading (averaged over a
+ * {@code crossing}, where the goal of none is not reached yet), stay near its course line and heading (averaged over a
  * crawl cycle), tilt no more than the ground asks, and walk at least a distance set 20 % or more below the median
- * measured over these runs (docs/roq-networks.md lists the measured figures; session 7 ran every row on eight noise
- * seeds and every bound held except the two comparisons, which now run on several seeds: Posture on 18° down, Course
- * as a mean over eight). The runs are independent simulations, two at a time.
+ * measured over these runs (docs/explanation/roq-control.md lists the measured figures). Every bound held on eight
+ * noise seeds per row; the two comparisons, which a single seed decides by chance, run on several seeds: Posture on
+ * 18° down, Course as a mean over eight). The runs are independent simulations, two at a time.
  */
 @Timeout(900)
 class RoqCoursesTest {
@@ -37,7 +37,7 @@ class RoqCoursesTest {
     private static final Path WALK = Path.of("..", "networks", "roq-walk.fdn");
     /** Simulated seconds per run. */
     private static final int SECONDS = 40;
-    /** Rubble seeds besides the built-in course's 2004 (21: session 5's crawl stalled on a block there and turned). */
+    /** Rubble seeds besides the built-in course's 2004 (21: a block there once stalled the crawl and turned it). */
     private static final long[] SEEDS = {11, 12, 13, 21};
 
     /** Simulated seconds of the heading runs: about 3 m of rubble (5 s of them standing while the gyro settles). */
@@ -196,9 +196,9 @@ class RoqCoursesTest {
         SoftAssertions soft = new SoftAssertions();
         // measured 1.75 m (1 crust broken under a loaded foot) and 1.67 m (4 broken by probes, none under a loaded
         // foot here; 1-4 per 100 s crossing on noise seeds 1, 2, 3, 31).
-        // Issue #19 asks for none under a loaded foot, which does NOT hold: a foothold accepted on a crust's edge,
+        // The goal is none under a loaded foot, which does NOT hold: a foothold accepted on a crust's edge,
         // partly on the ground beside it, bears the probe's 55 N and later breaks under the three-foot load. The
-        // longer stride (0.3 m, for the demo's 4 cm/s) made it more frequent (docs/roq-networks.md)
+        // longer stride (0.3 m, for the demo's 4 cm/s) made it more frequent (docs/explanation/roq-control.md)
         holds(soft, run("roq-rubble fragile"), 1.35, LEVEL_TILT, 2);
         holds(soft, run("roq-rubble crossing"), 1.3, LEVEL_TILT, 2);
         soft.assertAll();

@@ -145,7 +145,7 @@ class RoqRubbleTest {
                 .isGreaterThanOrEqualTo(1);
         // whether that shorter step holds is the ground's: on this run (module Posture levelling the body) the one
         // cell found was followed by two shorter steps onto its pit's edge, both rejected, and the gait stepped on
-        // the third (docs/roq-networks.md, session 6); the network's own count above saw others avoided
+        // the third; the network's own count above saw others avoided
         assertThat(r.cellsRetried()).as("of those, replaced by the same leg's next, shorter step (" + r.cellsAvoided()
                 + " of them accepted)").isGreaterThanOrEqualTo(1);
     }

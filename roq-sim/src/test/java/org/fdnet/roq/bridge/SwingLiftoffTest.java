@@ -31,7 +31,7 @@ import org.slf4j.LoggerFactory;
  * ground truth (forward kinematics of the joint angles and the body's pose): how far each foot moves along the course
  * in the first 0.2 s of its swing while it is still less than 1.5 cm above where the swing began and its sole carries more than 30 N, roq-rubble on {@code crossing} with
  * noise as in the demo, with {@code rise} 0.25 and with it 0 (as shipped: with it, rubble seed 21 and the heading
- * comparison of RoqCoursesTest move, see docs/roq-networks.md, session 7).
+ * comparison of RoqCoursesTest move, see docs/explanation/roq-control.md).
  */
 @Timeout(300)
 class SwingLiftoffTest {
@@ -42,7 +42,7 @@ class SwingLiftoffTest {
     /** A sole carrying more than this is still on the ground, N. */
     private static final double LOADED = 30;
     private static final int SECONDS = 60;
-    /** The rise measured in docs/roq-networks.md (session 7); roq-rubble ships 0 for now, see there. */
+    /** The rise whose effect this test measures; roq-rubble ships 0 (docs/explanation/roq-control.md says why). */
     private static final double RISE = 0.25;
     /** A foot less than this above where its swing began has not left the ground yet, m. */
     private static final double STILL_DOWN = 0.015;

@@ -233,7 +233,7 @@ public final class BenchLoggerCommand implements Callable<Integer> {
                 String.format("%,.0f rows/s (%.2f x one connection; the logger writes through %d)", two, two / keyed,
                         s.connections));
         double limit = s.connections > 1 ? two : keyed;
-        report.check("[2] ratio logger / keyed-COPY limit on the same " + s.connections + " connection(s) (issue #21)",
+        report.check("[2] ratio logger / keyed-COPY limit on the same " + s.connections + " connection(s)",
                 String.format("%.2f (%,.0f of %,.0f rows/s)", s.rate / limit, s.rate, limit), ">= 0.75", s.rate / limit >= 0.75);
     }
 

@@ -37,8 +37,8 @@ import org.fdnet.runtime.engine.RuntimeOptions;
  * (not a drop: each drop has a run of its own) is armed only once every reading has stayed within those thresholds
  * for {@link #CALM_TICKS} ticks and the reflex's correction is back to zero (waiting at most 5 s): while RoQ still
  * moves beyond them no snapshot can show the next push, and while the reflex still braces for the last one, with the
- * same leg and aim, the next one's snapshot has nothing new for it to answer (session 8: 6 of 100 answers took 4–10
- * ms that way once the deeper crouch made the braces last longer).
+ * same leg and aim, the next one's snapshot has nothing new for it to answer (such answers took 4–10 ms, a few in
+ * every hundred, once a deep crouch made the braces last longer).
  *
  * <pre>
  *  push ─▶ snapshot S: reading beyond threshold ─▶ network ─▶ JointTargets (source tick ≥ S) ─▶ applied at tick A

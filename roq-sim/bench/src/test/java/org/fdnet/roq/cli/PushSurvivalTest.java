@@ -11,14 +11,14 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
 /**
- * Pins what {@code bench roq --part push} measures (docs/roq-networks.md, "Disturbance"), one push between the
+ * Pins what {@code bench roq --part push} measures (docs/explanation/roq-control.md, "Disturbance"), one push between the
  * measured limits with and without the network, with margin on both sides: roq-reflex-bench on the flat course,
  * noise seed 7, a 0.2 s push during the first leg lift after 5.5 s, with the full network and with Balance and Reflex
  * unloaded. Three of the four points lie off the bench's table (22.5° steps, 0.2 s into the swing), which the reflex
- * was not chosen on; one pushes backwards, where session 5's network did no better than RoQ without it. Each push is
+ * was not chosen on; one pushes backwards, where a network that keeps Balance's lean does no better than RoQ without it. Each push is
  * survived with the network and tips RoQ over without it, and is 2.5–4 × the largest push RoQ survives without them
  * (and under a third of the network's): a change to Balance or the reflex that loses the 1.5× gain there shows here. Sideways (60–120° off the crawl's line) no point is pinned: above ~500 N RoQ is thrown across the floor and
- * which forces it survives is too irregular for one push to stand for a limit (docs/roq-networks.md).
+ * which forces it survives is too irregular for one push to stand for a limit.
  */
 class PushSurvivalTest {
     private static final Path NETWORK = Path.of("..", "..", "networks", "roq-reflex-bench.fdn");
@@ -56,7 +56,7 @@ class PushSurvivalTest {
     @Test
     void shouldSurviveABackwardPushMidSwingThatTipsRoqOverWithoutThem() throws Exception {
         // off the table: 202.5°, 0.2 s; 500 N is 0.26 × the network's 1900 N, 2.5 × the 200 N without (every push from
-        // 250 N to 800 N tips it over; session 6's network survived 300 N)
+        // 250 N to 800 N tips it over; a network without the brace's unlean survives only 300 N)
         assertSurvivedOnlyWithTheNetwork(500, 202.5, 0.2);
     }
 

@@ -17,7 +17,7 @@ class CliReferenceTest {
         }
     }
 
-    @Command(name = "zeta", description = {"Zeta does the last thing.", "More about zeta."})
+    @Command(name = "zeta", description = {"Zeta does the last thing, e.g. this,", "over two lines. More about zeta."})
     static final class Zeta implements Runnable {
         @Option(names = "--for", defaultValue = "5s", description = "how long (default ${DEFAULT-VALUE})")
         String duration;
@@ -54,7 +54,7 @@ class CliReferenceTest {
     void shouldListEveryVisibleCommandInNameOrderWithItsFirstDescriptionLine() {
         assertThat(reference.page()).contains("| [`tool alpha`](#tool-alpha) | Alpha does the first thing. |\n"
                         + "| [`tool alpha inner`](#tool-alpha-inner) | Inside alpha. |\n"
-                        + "| [`tool zeta`](#tool-zeta) | Zeta does the last thing. |\n")
+                        + "| [`tool zeta`](#tool-zeta) | Zeta does the last thing, e.g. this, over two lines. |\n")
                 .contains("| [`tool`](#tool) | The tool \\| its root. |")
                 .doesNotContain("secret");
     }

@@ -1,18 +1,20 @@
 package org.fdnet.bench;
 
 import java.util.List;
+import org.fdnet.bench.report.BenchReportCommand;
 import org.fdnet.cli.CommandProvider;
 import org.fdnet.corba.bench.CorbaBenchmark;
 import org.fdnet.runtime.cli.BenchCoreCommand;
 
 /**
  * Adds the core's benchmarks to {@code fdnet bench}: {@code load} (network files and queries), {@code core} (the
- * engine's hop latency) and {@code corba} (hops across hosts). They live in this bench module, never in the
+ * engine's hop latency), {@code corba} (hops across hosts) and {@code report} (every benchmark, into the table of
+ * docs/benchmarks.md). They live in this bench module, never in the
  * fdnet-core jar; bin/fdnet puts the module on its class path.
  */
 public final class CoreBenchmarks implements CommandProvider {
     @Override
     public List<Object> benchmarks() {
-        return List.of(new LoadBenchmark(), new BenchCoreCommand(), new CorbaBenchmark());
+        return List.of(new LoadBenchmark(), new BenchCoreCommand(), new CorbaBenchmark(), new BenchReportCommand());
     }
 }

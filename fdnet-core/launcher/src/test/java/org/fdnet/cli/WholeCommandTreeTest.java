@@ -21,6 +21,6 @@ class WholeCommandTreeTest {
     @Test
     void shouldOfferEveryBenchModulesBenchmarks() {
         assertThat(fdnet.getSubcommands().get("bench").getSubcommands())
-                .containsOnlyKeys("load", "core", "corba", "logger", "viewer", "hi", "rt", "sim", "roq");
+                .containsOnlyKeys("load", "core", "corba", "logger", "viewer", "hi", "rt", "sim", "roq", "report");
     }
 }

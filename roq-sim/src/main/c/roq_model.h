@@ -5,7 +5,7 @@
  *
  * The ONE place the model changes after open is roq_model_apply_edits (roq_model.c): a fragile cell that broke
  * drops out of the way and loses its collisions. roq_tick calls it at one safe point, between two steps (after
- * the previous tick's mj_step2, before this tick's mj_step1); see docs/roq-sim.md, "The one place the model
+ * the previous tick's mj_step2, before this tick's mj_step1); see docs/explanation/roq-sim.md, "The one place the model
  * changes".
  */
 #ifndef ROQ_MODEL_H

@@ -15,11 +15,11 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "run", mixinStandardHelpOptions = true,
         description = {"Run a network; print progress each second and a summary at the end.",
-                "Nodes whose <host> names another host run there (fdnet host --name H); see docs/distribution.md."
+                "Nodes whose <host> names another host run there (fdnet host --name H); see docs/explanation/distribution.md."
                         + " Every option works across hosts, or is refused by name.",
                 "While it runs it takes commands on standard input: load, unload, hold, resume MODULE;"
                         + " set [MODULE/]NODE/PARAM=VALUE; send [MODULE/]NODE=VALUE; help.",
-                "It publishes its control object for fdnet control NAME and fdnet hi --attach NAME (docs/control.md)."})
+                "It publishes its control object for fdnet control NAME and fdnet hi --attach NAME (docs/how-to/live-changes.md)."})
 public final class RunCommand implements Callable<Integer> {
     @Parameters(paramLabel = "FILE", description = "the .fdn network definition")
     Path file;

@@ -4,7 +4,7 @@ import java.util.Objects;
 
 /**
  * A network state event: a Data took a value ({@code datavalue_log}). The value is typed — numbers stay
- * numbers from the runtime's commit to the wire (binary, see {@code docs/protocol.md}) and to a plot; it becomes
+ * numbers from the runtime's commit to the wire (binary, see {@code docs/reference/protocol.md}) and to a plot; it becomes
  * text only where someone needs text (the logger's COPY, a trace, a table cell).
  */
 public record DataValueEvent(int sourceId, long time, TypedValue value) implements NetworkEvent {

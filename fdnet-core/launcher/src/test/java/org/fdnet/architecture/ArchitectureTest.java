@@ -17,7 +17,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
 /**
- * The architecture docs/architecture.md draws, checked on the main code of every module (benchmarks included):
+ * The architecture docs/explanation/architecture.md draws, checked on the main code of every module (benchmarks included):
  * no package cycle anywhere, and every import along the layering. A change that breaks either fails
  * {@code mvn -B verify}; change the drawing and this test together.
  */
@@ -64,7 +64,7 @@ class ArchitectureTest {
                 .check(classes);
     }
 
-    /** The layering of docs/architecture.md, bottom first. A layer may use the ones its line names. */
+    /** The layering of docs/explanation/architecture.md, bottom first. A layer may use the ones its line names. */
     static ArchRule layers() {
         return layeredArchitecture().consideringOnlyDependenciesInLayers()
                 .layer("Api").definedBy(inModule("fdnet-core/api"))

@@ -10,7 +10,7 @@
  * implements the API's {@link org.fdnet.runtime.Data.DataPort} (DataNode) and {@link org.fdnet.runtime.ServantScope},
  * calls the authors' protected life-cycle methods through {@link org.fdnet.runtime.NodeLifecycle}, and builds each
  * Relation's {@link org.fdnet.runtime.Servants} (EngineServants). Node authors never import this package; tools
- * (cli, run, corba, hi, roq-sim, benchmarks) do, to start a network. docs/runtime.md describes the semantics.
+ * (cli, run, corba, hi, roq-sim, benchmarks) do, to start a network. docs/explanation/runtime.md describes the semantics.
  *
  * <h2>Flow of one value</h2>
  * <pre>

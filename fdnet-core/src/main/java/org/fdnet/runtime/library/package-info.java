@@ -1,6 +1,6 @@
 /**
  * The built-in node classes: Datas of every value type (and sensor Datas fed from outside), and the
- * Relations of {@code docs/relations.md}. A node names them with an empty {@code path} and either the
+ * Relations of {@code docs/reference/relations.md}. A node names them with an empty {@code path} and either the
  * fully qualified name or the bare class name.
  *
  * <pre>

@@ -93,7 +93,7 @@ public final class NodeClassResolver implements AutoCloseable {
         try {
             return Class.forName(qualified, false, builtIn);
         } catch (ClassNotFoundException | LinkageError e) {
-            throw new NodeClassException(where(ref, node) + ": no such built-in class (see docs/relations.md for the library)", e);
+            throw new NodeClassException(where(ref, node) + ": no such built-in class (see docs/reference/relations.md for the library)", e);
         }
     }
 

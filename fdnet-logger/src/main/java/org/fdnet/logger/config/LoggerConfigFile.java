@@ -54,7 +54,7 @@ public final class LoggerConfigFile {
             Files.createDirectories(file.getParent());
         }
         try (Writer w = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
-            p.store(w, "FDNet logger configuration (fdnet logger --config FILE); see docs/logger.md");
+            p.store(w, "FDNet logger configuration (fdnet logger --config FILE); see docs/reference/logger.md");
         }
     }
 }

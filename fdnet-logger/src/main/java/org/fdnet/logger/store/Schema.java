@@ -5,7 +5,7 @@ import java.sql.SQLException;
 import java.sql.Statement;
 
 /**
- * The logger's tables, created on first start (see {@code docs/logger.md}). The three event tables are
+ * The logger's tables, created on first start (see {@code docs/reference/logger.md}). The three event tables are
  * the thesis's, column for column; {@code fdnet_run} and {@code fdnet_node} tell runs apart and name the
  * nodes: a core's node ids are only unique within one run, so each (run, core-local id) gets a global
  * {@code sourceid} from blocks of {@code fdnet_sourceid_block}, and the event tables' keys never collide

@@ -118,7 +118,7 @@ public final class LoggerConnection implements AutoCloseable {
 
     /**
      * The event on the run's coordinator's time axis: its time less its host's clock offset (as the coordinator
-     * measured it at deployment, see docs/viewer.md). Only Data values are plotted; other events pass unchanged.
+     * measured it at deployment, see docs/how-to/viewer.md). Only Data values are plotted; other events pass unchanged.
      */
     public NetworkEvent shift(NetworkEvent e) {
         long offset = offsetOfSource.getOrDefault(e.sourceId(), 0L);

@@ -4,7 +4,7 @@ package org.fdnet.roq.sim;
  * The simulated RoQ's constants: the single source of truth for the MJCF model ({@link MjcfWriter} writes the
  * model from these numbers) and for a gait or inverse kinematics in Java. {@code RoqGeometryTest} loads the model
  * into MuJoCo and checks that masses, joint ranges and foot positions agree with these figures, so the two cannot
- * drift. Every figure is marked sourced or assumed in {@code docs/roq-sim.md}.
+ * drift. Every figure is marked sourced or assumed in {@code docs/explanation/roq-sim.md}.
  *
  * <p>Frames: body frame x forward, y left, z up, origin at the body's centre. Each leg's frame sits at its hip
  * ({@link #hipPosition}) and is turned about z by {@link #hipYawOffset} so its x axis points outward (sprawling

@@ -22,6 +22,6 @@
  * then {@link org.fdnet.roq.sim.LayoutHandshake} compares the C side's one layout table ({@code ROQ_LAYOUT} in
  * roq_layout.h) by name with every constant of {@link org.fdnet.roq.sim.SharedBlockLayout} and
  * {@code NativeParameters}. On the C side a constant {@code roq_model}, a {@code roq_state} and the real-time
- * thread's {@code roq_rt} are apart, as MuJoCo's {@code mjModel} and {@code mjData} (docs/roq-sim.md).
+ * thread's {@code roq_rt} are apart, as MuJoCo's {@code mjModel} and {@code mjData} (docs/explanation/roq-sim.md).
  */
 package org.fdnet.roq.sim;

@@ -22,7 +22,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
- * What module Balance does and does not do for RoQ (docs/roq-networks.md, "Balance"): the crawl is statically
+ * What module Balance does and does not do for RoQ (docs/explanation/roq-control.md, "Balance"): the crawl is statically
  * stable enough that RoQ stays up without it — even at the crawl's fastest, duty factor 3/4 — because when the
  * centre of mass leaves the support triangle the body tips onto the lifted foot, which is at most
  * {@code clearance} (6 cm) above the ground. Pinned here so that a gait which does need Balance shows up.

@@ -27,7 +27,7 @@ import org.slf4j.LoggerFactory;
  * The crawl's lift-off by contact (CrawlGait's {@code rise}, reading the soles): a swinging foot goes up before it goes
  * forward, and forward only once its sole is unloaded. Without it a foot whose swing begins against a block's or a
  * crust's face (the stance feet creep a few centimetres) is driven into that face while it still bears load — on
- * {@code crossing} that was 14 of 35 loaded-foot breakthroughs over 24 noise seeds (docs/roq-networks.md). Measured by
+ * {@code crossing} that was 14 of 35 loaded-foot breakthroughs over 24 noise seeds (docs/explanation/roq-control.md). Measured by
  * ground truth (forward kinematics of the joint angles and the body's pose): how far each foot moves along the course
  * in the first 0.2 s of its swing while it is still less than 1.5 cm above where the swing began and its sole carries more than 30 N, roq-rubble on {@code crossing} with
  * noise as in the demo, with {@code rise} 0.25 and with it 0 (as shipped: with it, rubble seed 21 and the heading

@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
  * 1.5 m up: no ground, no weight on the leg for 0.5 s).
  */
 class ServoTest {
-    /** Step size, rad, and the rise time the servo must meet for it (docs/roq-sim.md: PD, motor limits, armature). */
+    /** Step size, rad, and the rise time the servo must meet for it (docs/explanation/roq-sim.md: PD, motor limits, armature). */
     static final double STEP = 0.4;
     static final int RISE_TICKS = 150;
 

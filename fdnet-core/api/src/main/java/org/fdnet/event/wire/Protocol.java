@@ -1,7 +1,7 @@
 package org.fdnet.event.wire;
 
 /**
- * The constants of the logger protocol (see {@code docs/protocol.md}). Version 2: a Data's
+ * The constants of the logger protocol (see {@code docs/reference/protocol.md}). Version 2: a Data's
  * value travels in binary (version 1 sent it as text; a version-1 peer is refused with both versions named). Every connection starts
  * with a {@link MessageType#HELLO} from the client naming the magic, the version and the role; the server
  * answers {@link MessageType#WELCOME} or {@link MessageType#ERROR} and closes.

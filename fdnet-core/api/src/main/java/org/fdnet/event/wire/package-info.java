@@ -1,6 +1,6 @@
 /**
  * The logger protocol: versioned, length-prefixed binary frames shared by the core's logger client, the
- * logger and the viewers (specified in {@code docs/protocol.md}).
+ * logger and the viewers (specified in {@code docs/reference/protocol.md}).
  *
  * <pre>
  *   NetworkEvent ──EventCodec──▶ FrameWriter ──u32 length · u8 type · payload──▶ socket

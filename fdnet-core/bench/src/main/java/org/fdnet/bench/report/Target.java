@@ -36,6 +36,10 @@ record Target(boolean onRatio, boolean atMost, double bound) {
     /** As the table shows it, e.g. {@code ≤ 2 µs} or {@code ≥ 0.9× baseline}. */
     String text(String unit) {
         String sign = atMost ? "≤ " : "≥ ";
-        return onRatio ? sign + Figures.format(bound) + "× baseline" : sign + Figures.format(bound) + " " + unit;
+        String number = Figures.format(bound);
+        if (number.contains(".")) {
+            number = number.replaceAll("0+$", "").replaceAll("\\.$", ""); // a bound is exact: 0.9, not 0.900
+        }
+        return onRatio ? sign + number + "× baseline" : sign + number + " " + unit;
     }
 }

@@ -78,5 +78,7 @@ class FigureTableTest {
         assertThat(FigureRow.measured(ratio, 57, 39, RUN, "c").verdict()).isEqualTo("**not met**: the VM's scheduling");
         assertThat(FigureRow.measured(ratio, 57, 39, RUN, "c").target()).isEqualTo("≤ 1.25× baseline");
         assertThat(FigureRow.measured(ratio, 40, 39, RUN, "c").verdict()).isEqualTo("met");
+        assertThat(Target.ratioAtLeast(0.9).text("sim s/s")).isEqualTo("≥ 0.9× baseline");
+        assertThat(Target.atLeast(1_000_000).text("firings/s")).isEqualTo("≥ 1,000,000 firings/s");
     }
 }

@@ -132,13 +132,20 @@ class RoqCoursesTest {
         soft.assertThat(r.tilt()).as(r + ": largest roll or pitch, rad").isLessThan(tilt);
     }
 
-    /** Off the course line, averaged over a cycle, m (measured at most 0.21, rubble seed 14). */
+    /**
+     * Off the course line, averaged over a cycle, m: protects the heading and track hold. Measured at most 0.21 (rubble
+     * seed 14) over these runs; the bound is 1.65× that, above the scatter between noise seeds.
+     */
     private static final double MAX_TRACK = 0.35;
-    /** Off the heading, averaged over a cycle, rad (measured at most 0.27, fragile). */
+    /** Off the heading, averaged over a cycle, rad: measured at most 0.27 (fragile); the bound 1.65× that, as above. */
     private static final double MAX_HEADING = 0.45;
-    /** Largest roll or pitch on level ground and rubble, rad (measured at most 0.06 level, 0.24 rubble). */
+    /**
+     * Largest roll or pitch on level ground and rubble, rad: protects Balance and Posture against rocking the body.
+     * Measured at most 0.06 level and 0.24 on rubble; the bound leaves rubble's worst 0.16 rad of room and stays
+     * below FallDetector's 0.6.
+     */
     private static final double LEVEL_TILT = 0.4;
-    /** Largest roll or pitch beyond the slope, rad (measured at most 0.05 beyond 15°). */
+    /** Largest roll or pitch beyond the slope, rad: Posture levels the body; measured at most 0.05 beyond 15°, 3× that. */
     private static final double SLOPE_TILT = 0.15;
 
     @Test
@@ -164,7 +171,7 @@ class RoqCoursesTest {
     @Test
     void shouldTipOverGoingDownEighteenDegreesWithModulePostureUnloaded() throws Exception {
         // measured on eight noise seeds going down 15°: without Posture 6 fell and 2 reached 0.37-0.39 rad, so a
-        // single 15° run cannot tell (this test used to check one, noise 40). 18°, six noise seeds each: without Posture
+        // single 15° run cannot tell. 18°, six noise seeds each: without Posture
         // all six fell (0.70-0.81 rad), with it none (0.43-0.47 rad). 20° is past its edge: with Posture 3 of 6 fell.
         SoftAssertions soft = new SoftAssertions();
         for (long noise : STEEP_NOISE) {

@@ -44,7 +44,7 @@ class RoqCoursesTest {
     private static final int HEADING_SECONDS = 70;
     /**
      * Noise seeds of the heading runs. One run tells little: over 3 m the drift without Course ranged 0.18–0.91 m
-     * over eight seeds (0.53 m on seed 5, the one this test used to run alone), so the comparison is of means.
+     * over eight seeds, so the comparison is of means.
      */
     private static final long[] HEADING_NOISE = {5, 105, 205, 305, 405, 505, 605, 705};
     private static final String HELD = "roq-rubble rubble 12, 70 s, noise ";

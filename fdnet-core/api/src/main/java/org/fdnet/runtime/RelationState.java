@@ -6,6 +6,7 @@ import org.fdnet.netinfo.NodeRef;
 /**
  * A Relation's state as the controller reports it.
  *
+ * @param relation the Relation
  * @param status  running, waiting, held, failed, stopped
  * @param cause   for FAILED: the exception; else {@code null}
  * @param missing the declared connections' Datas that are not in the running network
@@ -13,7 +14,11 @@ import org.fdnet.netinfo.NodeRef;
  */
 public record RelationState(NodeRef relation, RelationStatus status, Throwable cause, List<NodeRef> missing,
                             long firings) {
-    /** The text of a RelationValueEvent: {@code RUNNING}, {@code FAILED: cause}, {@code WAITING: missing A, B}. */
+    /**
+     * The text of a RelationValueEvent: {@code RUNNING}, {@code FAILED: cause}, {@code WAITING: missing A, B}.
+     *
+     * @return the status, with the cause or the missing Datas where there are some
+     */
     public String text() {
         return switch (status) {
             case FAILED -> "FAILED: " + cause;

@@ -38,8 +38,8 @@ public abstract class Relation {
      * on a bad one.
      *
      * @param parameters the node's parameters as the network file gives them
-     * @throws Exception when the node cannot start: it does not join the network, and the message is shown
-     *                   with the node's name
+     * @throws Exception when the node cannot start: the start, module load or change that would make it is
+     *                   refused, with this message after the node's name, and the network stays as it was
      */
     protected void init(NodeParameters parameters) throws Exception {
     }

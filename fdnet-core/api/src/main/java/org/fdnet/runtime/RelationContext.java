@@ -11,7 +11,7 @@ import org.fdnet.netinfo.NodeRef;
  * output is ignored. Touching a Data the Relation is not connected to is an IllegalArgumentException.
  *
  * <p>A firing that adds its inputs {@code a} and {@code b}, treating a missing one as 0, and writes the sum and
- * whether it is above a limit:
+ * whether it is above the Relation's field {@code limit}:
  *
  * <pre>{@code
  * protected void compute(RelationContext context) {

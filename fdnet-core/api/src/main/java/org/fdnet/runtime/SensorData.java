@@ -6,7 +6,8 @@ package org.fdnet.runtime;
  * exactly as if a Relation had written it (stamped, logged, readers told). {@link #start} and
  * {@link #stop} frame the time the Data is part of a running network, e.g. to start a polling thread.
  *
- * <p>A thermometer polled ten times a second while the network runs:
+ * <p>A thermometer polled ten times a second while the network runs ({@code readCelsius()} stands for the
+ * device driver's call):
  *
  * <pre>{@code
  * public class Thermometer extends SensorData {

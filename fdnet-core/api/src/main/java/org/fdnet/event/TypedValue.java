@@ -152,7 +152,7 @@ public final class TypedValue {
     /**
      * The value's type, which decides which accessor may be called.
      *
-     * @return the type
+     * @return the type fixed when the value was made
      */
     public ValueType type() {
         return type;
@@ -195,7 +195,7 @@ public final class TypedValue {
     /**
      * The payload of a {@code LONG} value.
      *
-     * @return the number
+     * @return the whole number, exact
      * @throws IllegalStateException for any other type
      */
     public long longValue() {
@@ -206,7 +206,7 @@ public final class TypedValue {
     /**
      * The payload of a {@code DOUBLE} value.
      *
-     * @return the number
+     * @return the number, NaN and infinities included
      * @throws IllegalStateException for any other type
      */
     public double doubleValue() {
@@ -217,7 +217,7 @@ public final class TypedValue {
     /**
      * The payload of a {@code STRING} value.
      *
-     * @return the text
+     * @return the text, never null
      * @throws IllegalStateException for any other type
      */
     public String stringValue() {
@@ -250,7 +250,7 @@ public final class TypedValue {
     /**
      * Elements of a {@code DOUBLES} value, bytes of a {@code BYTES} value, 1 for any other.
      *
-     * @return the length
+     * @return the number of elements or bytes; 1 for a boolean, a number or a string
      */
     public int length() {
         return switch (type) {
@@ -264,7 +264,7 @@ public final class TypedValue {
      * Element {@code i} of a {@code DOUBLES} value, without copying the vector.
      *
      * @param i from 0 to {@link #length()} minus one
-     * @return the element
+     * @return the element's value
      * @throws IllegalStateException for any other type
      * @throws IndexOutOfBoundsException when {@code i} is outside the vector
      */
@@ -277,7 +277,7 @@ public final class TypedValue {
      * Byte {@code i} of a {@code BYTES} value, without copying them.
      *
      * @param i from 0 to {@link #length()} minus one
-     * @return the byte
+     * @return the byte, signed as Java's {@code byte} is
      * @throws IllegalStateException for any other type
      * @throws IndexOutOfBoundsException when {@code i} is outside the bytes
      */

@@ -37,7 +37,7 @@ public enum ValueType {
      * The type stored under {@code code}.
      *
      * @param code a {@code typevalue} read from the database or the wire
-     * @return the type
+     * @return the type whose {@link #code()} is {@code code}
      * @throws IllegalArgumentException when no type has that code
      */
     public static ValueType fromCode(int code) {

@@ -36,7 +36,7 @@ public record NodeLayout(double x, double y, Double width, Double height, String
      *
      * @param x the left edge
      * @param y the top edge
-     * @return the layout
+     * @return a layout whose width, height and colour are null
      */
     public static NodeLayout at(double x, double y) {
         return new NodeLayout(x, y, null, null, null);

@@ -44,7 +44,7 @@ public record ConnectionInfo(ConnectionKind kind, String name, NodeRef data, Nod
      *
      * @param data     the Data read
      * @param relation the Relation that reads it
-     * @return the connection
+     * @return a Reader that exists at start, with no inline ends
      */
     public static ConnectionInfo reader(NodeRef data, NodeRef relation) {
         return new ConnectionInfo(ConnectionKind.READER, null, data, relation, true, false, false);
@@ -55,7 +55,7 @@ public record ConnectionInfo(ConnectionKind kind, String name, NodeRef data, Nod
      *
      * @param relation the Relation that writes
      * @param data     the Data it writes
-     * @return the connection
+     * @return a Writer that exists at start
      */
     public static ConnectionInfo writer(NodeRef relation, NodeRef data) {
         return new ConnectionInfo(ConnectionKind.WRITER, null, data, relation, true, false, false);

@@ -40,7 +40,7 @@ public final class ModuleTree {
     /**
      * The modules directly below {@code path}, in declaration order.
      *
-     * @param network the network
+     * @param network the network whose modules are looked at
      * @param path    a module's full name
      * @return a new list, empty when it has no children
      */
@@ -57,7 +57,7 @@ public final class ModuleTree {
     /**
      * {@code path} and every module below it, parents before children.
      *
-     * @param network the network
+     * @param network the network whose modules are looked at
      * @param path    a module's full name
      * @return a new list of full names, in declaration order; empty when the network has no such module
      */
@@ -74,7 +74,7 @@ public final class ModuleTree {
     /**
      * The modules a network loads when it starts, parents before children.
      *
-     * @param network the network
+     * @param network the network whose modules are looked at
      * @return a new set of full names, {@code main} included
      */
     public static Set<String> atStart(NetworkInfo network) {
@@ -93,7 +93,7 @@ public final class ModuleTree {
      * children marked {@code loadatstart}, recursively. The module's own parent must be loaded (else the result is
      * empty: see {@link #whyNotLoadable}).
      *
-     * @param network the network
+     * @param network the network whose modules are looked at
      * @param module  the module to load
      * @return a new set of full names, {@code module} first
      */
@@ -112,7 +112,7 @@ public final class ModuleTree {
     /**
      * The reason {@code module} cannot be loaded on top of {@code loaded}, or {@code null} when it can.
      *
-     * @param network the network
+     * @param network the network whose modules are looked at
      * @param loaded  the modules running now
      * @param module  the module to load
      * @return a message naming the module (unknown, already loaded, or its parent not loaded), or null
@@ -134,7 +134,7 @@ public final class ModuleTree {
     /**
      * {@code loaded} after loading {@code module} (and its loadatstart children).
      *
-     * @param network the network
+     * @param network the network whose modules are looked at
      * @param loaded  the modules running now; not changed
      * @param module  the module to load
      * @return a new set

@@ -42,7 +42,7 @@ public record NodeInfo(NodeKind kind, String name, String host, String path, Str
      * @param name       the node's name in its module
      * @param className  the Data's class, e.g. {@code DoubleData} or a fully qualified name
      * @param parameters its parameters, in order
-     * @return the definition
+     * @return a Data definition on {@code localhost}, with an empty path
      */
     public static NodeInfo data(String name, String className, Parameter... parameters) {
         return new NodeInfo(NodeKind.DATA, name, "localhost", "", className, List.of(parameters));
@@ -54,7 +54,7 @@ public record NodeInfo(NodeKind kind, String name, String host, String path, Str
      * @param name       the node's name in its module
      * @param className  the Relation's class, e.g. {@code LowPass} or a fully qualified name
      * @param parameters its parameters, in order
-     * @return the definition
+     * @return a Relation definition on {@code localhost}, with an empty path
      */
     public static NodeInfo relation(String name, String className, Parameter... parameters) {
         return new NodeInfo(NodeKind.RELATION, name, "localhost", "", className, List.of(parameters));

@@ -18,7 +18,7 @@ public enum NodeKind {
     /**
      * The word users see: "Data" or "Relation".
      *
-     * @return the label
+     * @return {@code Data} or {@code Relation}
      */
     public String label() {
         return label;

@@ -35,7 +35,7 @@ public record Parameter(String name, ParameterType type, String value) {
      * An untyped, unnamed parameter: the original FDNet form.
      *
      * @param value the text
-     * @return the parameter
+     * @return a parameter without name or type
      */
     public static Parameter of(String value) {
         return new Parameter(null, null, value);
@@ -46,7 +46,7 @@ public record Parameter(String name, ParameterType type, String value) {
      *
      * @param name  the parameter's name, not blank
      * @param value the text
-     * @return the parameter
+     * @return a parameter without type: a string the node gives meaning
      */
     public static Parameter named(String name, String value) {
         return new Parameter(name, null, value);

@@ -24,7 +24,7 @@ public record ChangeOutcome(String description, boolean executed, String reason)
      *
      * @param description what was asked
      * @param reason      why it was refused, naming what is wrong
-     * @return the outcome
+     * @return an outcome whose {@code executed} is false
      */
     public static ChangeOutcome failed(String description, String reason) {
         return new ChangeOutcome(description, false, reason);

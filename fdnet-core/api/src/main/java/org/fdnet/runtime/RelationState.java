@@ -6,11 +6,11 @@ import org.fdnet.netinfo.NodeRef;
 /**
  * A Relation's state as the controller reports it.
  *
- * @param relation the Relation
- * @param status  running, waiting, held, failed, stopped
- * @param cause   for FAILED: the exception; else {@code null}
- * @param missing the declared connections' Datas that are not in the running network
- * @param firings how many times the current instance computed
+ * @param relation the Relation whose state this is
+ * @param status   running, waiting, held, failed, stopped
+ * @param cause    for FAILED: the exception; else {@code null}
+ * @param missing  the declared connections' Datas that are not in the running network
+ * @param firings  how many times the current instance computed
  */
 public record RelationState(NodeRef relation, RelationStatus status, Throwable cause, List<NodeRef> missing,
                             long firings) {

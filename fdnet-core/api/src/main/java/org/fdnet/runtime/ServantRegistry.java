@@ -66,7 +66,7 @@ public final class ServantRegistry implements AutoCloseable {
      *
      * @param name the class's name in servant paths, non-empty, without {@code /} or surrounding spaces; a class
      *             registered under it before is replaced
-     * @param type the class
+     * @param type the class; it needs a public no-argument constructor
      * @throws MessageRefusedException when {@code name} is malformed
      */
     public void setServantClass(String name, Class<? extends MessageServant> type) {

@@ -21,7 +21,7 @@ public record ErrorFrame(ErrorCode code, String message) {
      * Reads an ERROR frame's payload.
      *
      * @param f a frame of type ERROR, its cursor at the payload's start
-     * @return the error
+     * @return the code ({@link ErrorCode#PROTOCOL} for an unknown one) and the message
      * @throws ProtocolException when the payload is truncated
      */
     public static ErrorFrame read(Frame f) throws ProtocolException {

@@ -103,7 +103,7 @@ public final class Frame {
      * cannot make the reader allocate more than the frame could hold.
      *
      * @param minBytesEach the least bytes one counted item takes
-     * @return the count
+     * @return the count, 0 or more
      * @throws ProtocolException when the count is negative or its items could not fit the bytes left
      */
     public int getCount(int minBytesEach) throws ProtocolException {

@@ -19,7 +19,7 @@ public record Hello(int version, int role, UUID run, String name) {
      *
      * @param run  the run's id, the same on every reconnect of the run
      * @param name the run's name for people
-     * @return the greeting
+     * @return a HELLO of role core at {@link Protocol#VERSION}
      */
     public static Hello core(UUID run, String name) {
         return new Hello(Protocol.VERSION, Protocol.ROLE_CORE, run, name);
@@ -29,7 +29,7 @@ public record Hello(int version, int role, UUID run, String name) {
      * A viewer's HELLO at this protocol version.
      *
      * @param name the viewer's name for people
-     * @return the greeting
+     * @return a HELLO of role viewer at {@link Protocol#VERSION}, with an all-zero run id
      */
     public static Hello viewer(String name) {
         return new Hello(Protocol.VERSION, Protocol.ROLE_VIEWER, new UUID(0, 0), name);
@@ -50,7 +50,7 @@ public record Hello(int version, int role, UUID run, String name) {
      * the server refuses another version with an ERROR naming both.
      *
      * @param f the first frame of a connection
-     * @return the greeting
+     * @return the greeting as the client sent it
      * @throws ProtocolException when the frame is not a HELLO, the magic is wrong, the role unknown, or the payload
      *                           malformed
      */

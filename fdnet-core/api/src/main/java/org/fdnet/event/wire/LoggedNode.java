@@ -29,7 +29,7 @@ public record LoggedNode(int sourceId, int runId, NodeKind kind, NodeRef name) {
      * Reads one node at the frame's cursor.
      *
      * @param f a frame positioned on a node
-     * @return the node
+     * @return the node; the cursor is after it
      * @throws ProtocolException when the payload ends inside it
      */
     public static LoggedNode read(Frame f) throws ProtocolException {

@@ -34,7 +34,7 @@ public record LoggedRun(int streamId, int networkRunId, String network, String h
      * Reads one stream at the frame's cursor.
      *
      * @param f a frame positioned on a stream
-     * @return the stream
+     * @return the stream; the cursor is after it
      * @throws ProtocolException when the payload ends inside it
      */
     public static LoggedRun read(Frame f) throws ProtocolException {

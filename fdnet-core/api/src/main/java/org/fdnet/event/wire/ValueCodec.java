@@ -61,7 +61,7 @@ public final class ValueCodec {
      * Reads one value at the frame's cursor.
      *
      * @param f a frame positioned on a value
-     * @return the value
+     * @return the value, of the type the frame names; the cursor is after it
      * @throws ProtocolException when the value type is unknown, a boolean is neither 0 nor 1, or the payload ends
      *                           inside the value
      */

@@ -22,7 +22,7 @@ public record ViewerRequest(MessageType type, int id, String filter, int[] nodes
      *
      * @param id     the request id
      * @param filter {@code ""} for every node, {@code Node} or {@code Module/Node}
-     * @return the request
+     * @return a LIST_NODES request, without nodes or time range
      */
     public static ViewerRequest listNodes(int id, String filter) {
         return new ViewerRequest(MessageType.LIST_NODES, id, filter, NO_NODES, 0, 0);
@@ -32,7 +32,7 @@ public record ViewerRequest(MessageType type, int id, String filter, int[] nodes
      * A LIST_RUNS request.
      *
      * @param id the request id
-     * @return the request
+     * @return a LIST_RUNS request, with an empty filter and no nodes
      */
     public static ViewerRequest listRuns(int id) {
         return new ViewerRequest(MessageType.LIST_RUNS, id, "", NO_NODES, 0, 0);
@@ -46,7 +46,7 @@ public record ViewerRequest(MessageType type, int id, String filter, int[] nodes
      * @param nodes the logger's node ids, at most {@link #MAX_NODES}
      * @param from  the first time, µs since the epoch, inclusive
      * @param to    the last time, µs since the epoch, inclusive
-     * @return the request
+     * @return a request of {@code type}, with an empty filter; {@code nodes} is not copied
      */
     public static ViewerRequest history(MessageType type, int id, int[] nodes, long from, long to) {
         return new ViewerRequest(type, id, "", nodes, from, to);
@@ -57,7 +57,7 @@ public record ViewerRequest(MessageType type, int id, String filter, int[] nodes
      *
      * @param type  MONITOR or UNMONITOR
      * @param nodes the logger's node ids, at most {@link #MAX_NODES}; none in UNMONITOR stops all
-     * @return the request
+     * @return a request of {@code type} with id 0, no filter and no time range
      */
     public static ViewerRequest monitor(MessageType type, int[] nodes) {
         return new ViewerRequest(type, 0, "", nodes, 0, 0);
@@ -90,7 +90,7 @@ public record ViewerRequest(MessageType type, int id, String filter, int[] nodes
      * The request in {@code f}, or a {@link ProtocolException} naming what a viewer may not send.
      *
      * @param f a frame a viewer sent after the handshake
-     * @return the request
+     * @return the request, checked whole
      * @throws ProtocolException when the type is not a viewer's request, the payload is malformed, it names more
      *                           than {@link #MAX_NODES} nodes or a negative id, or bytes trail a request
      *                           other than LIST_NODES

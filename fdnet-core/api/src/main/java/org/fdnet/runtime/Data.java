@@ -96,7 +96,8 @@ public abstract class Data {
     /**
      * The current value (the engine's, always the latest committed one).
      *
-     * @return the latest committed value, or null while this Data is not in a running network
+     * @return the latest committed value (the last one, once the Data has left the network), or null before it first
+     *         joins a running network
      */
     public final Value value() {
         DataPort p = port;
@@ -107,7 +108,8 @@ public abstract class Data {
      * Writes a value from outside the dataflow (a sensor, a device); see {@link SensorData}.
      *
      * @param value the value, converted to {@link #type()} and passed through {@link #accept}; not null
-     * @throws IllegalStateException when this Data is not part of a running network
+     * @throws IllegalStateException when this Data never joined a running network (once it has left, values are
+     *                               ignored)
      * @throws IllegalArgumentException when the value cannot be converted or {@link #accept} refuses it
      */
     protected final void publish(Value value) {

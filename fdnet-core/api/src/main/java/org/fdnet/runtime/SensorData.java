@@ -37,7 +37,8 @@ public abstract class SensorData extends Data {
      *
      * @param value the new value, converted to {@link #type()} and passed through {@link #accept}; not null. To
      *              say which sensor snapshot it comes from, push {@code value.withTick(n)}
-     * @throws IllegalStateException when this Data is not part of a running network
+     * @throws IllegalStateException when this Data never joined a running network (once it has left, values are
+     *                               ignored)
      * @throws IllegalArgumentException when the value cannot be converted or {@link #accept} refuses it
      */
     public final void push(Value value) {

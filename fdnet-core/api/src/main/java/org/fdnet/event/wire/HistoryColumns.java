@@ -227,7 +227,8 @@ public final class HistoryColumns {
      * Event {@code i} as an object (made now for numbers).
      *
      * @param i the event's index
-     * @return the event, with the shifted time
+     * @return the event: a number's made now, with the time {@link #time} gives; any other as decoded, with its time as
+     *         the logger sent it (not shifted)
      * @throws IndexOutOfBoundsException when {@code i} is out of range
      */
     public NetworkEvent event(int i) {

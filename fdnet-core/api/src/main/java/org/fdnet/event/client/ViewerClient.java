@@ -53,7 +53,7 @@ public final class ViewerClient implements AutoCloseable {
     private volatile IOException failure;
 
     /**
-     * Connects and greets the logger's sender server (TLS when the network has keys, see
+     * Connects and greets the logger's sender server (over TLS when this process speaks it, see
      * {@link org.fdnet.tls.TransportSecurity}); waits at most 5 s for the connection.
      *
      * @param host            the sender server's address

@@ -2,6 +2,8 @@ package org.fdnet.docs;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -11,18 +13,21 @@ import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
  * Every relative link in the README, the changelog and docs/ leads somewhere: the file exists and, when the link names
- * a heading ({@code page.md#heading}), the page has that heading. Links to the web are not followed (the build runs
- * offline).
+ * a heading ({@code page.md#heading}), the page has that heading; and every page that code, networks, scripts and POMs
+ * name ({@code docs/…/page.md}) exists. Links to the web are not followed (the build runs offline).
  */
 class DocumentLinksTest {
     /** {@code [text](target)} and {@code ![alt](target)}; the target ends at a space (a title) or the bracket. */
     private static final Pattern LINK = Pattern.compile("\\]\\(([^)\\s]+)(?:\\s+\"[^\"]*\")?\\)");
     private static final Pattern HEADING = Pattern.compile("(?m)^#{1,6}\\s+(.+?)\\s*#*\\s*$");
     private static final Pattern FENCE = Pattern.compile("(?ms)^```.*?^```");
+    /** A page path as code and networks name it, e.g. {@code docs/reference/protocol.md}. */
+    private static final Pattern DOCS_PATH = Pattern.compile("docs/[A-Za-z0-9_/.-]+\\.md");
 
     @Test
     void shouldResolveEveryRelativeLinkInTheDocuments() {
@@ -38,6 +43,30 @@ class DocumentLinksTest {
             }
         }
         assertThat(broken).as("links that lead nowhere").isEmpty();
+    }
+
+    @Test
+    void shouldNameOnlyPagesThatExistWhereCodeAndNetworksPointIntoTheDocuments() throws IOException {
+        List<String> missing = new ArrayList<>();
+        try (Stream<Path> files = Files.walk(ProjectFiles.ROOT)) {
+            for (Path file : files.filter(DocumentLinksTest::pointsIntoDocs).toList()) {
+                // ISO-8859-1 reads any file (a network may be in Shift_JIS); the paths looked for are ASCII
+                Matcher m = DOCS_PATH.matcher(new String(Files.readAllBytes(file), StandardCharsets.ISO_8859_1));
+                while (m.find()) {
+                    if (!Files.exists(ProjectFiles.ROOT.resolve(m.group()))) {
+                        missing.add(ProjectFiles.relative(file) + ": " + m.group());
+                    }
+                }
+            }
+        }
+        assertThat(missing).as("pages named in code, networks, scripts and POMs that do not exist").isEmpty();
+    }
+
+    private static boolean pointsIntoDocs(Path p) {
+        String s = p.toString();
+        return Files.isRegularFile(p) && !s.contains("/target/") && !s.contains("/.git/")
+                && (s.contains("/src/") && s.matches(".*\\.(java|c|h|properties)$") || s.endsWith(".fdn")
+                        || s.endsWith("pom.xml") || s.contains("/bin/") || s.contains("/.ci/"));
     }
 
     @Test

@@ -23,10 +23,12 @@ import picocli.CommandLine.Spec;
  * offline, non-interactive).
  */
 @Command(name = "nodes", mixinStandardHelpOptions = true,
-        description = {"Write a Maven project of your own nodes into DIR: a Data class, a Relation class with parameters,",
-            "a network using them beside RoQ's nodes, a network-level test and a robot-level test on the test kit,",
-            "and a README. It depends only on FDNet's installed artifacts (run `fdnet sdk install` once first).",
-            "The same as: mvn archetype:generate -DarchetypeGroupId=org.fdnet -DarchetypeArtifactId=fdnet-nodes-archetype"},
+        description = {"Write a Maven project of your own nodes into DIR: a Data class, a Relation class with "
+                + "parameters, a network using them beside RoQ's nodes, a network-level and a robot-level test on the "
+                + "test kit, and a README. It depends only on FDNet's installed artifacts: run `fdnet sdk install` "
+                + "once first.",
+            "The same as mvn archetype:generate -DarchetypeGroupId=org.fdnet "
+                + "-DarchetypeArtifactId=fdnet-nodes-archetype, offline."},
         exitCodeListHeading = "Exit codes:%n",
         exitCodeList = {"0:generated", "1:DIR is not empty, a name is not valid, or Maven failed"})
 public final class NewNodesCommand implements Callable<Integer> {
@@ -34,7 +36,7 @@ public final class NewNodesCommand implements Callable<Integer> {
     private static final Pattern PACKAGE = Pattern.compile("[a-z_][a-z0-9_]*(\\.[a-z_][a-z0-9_]*)*");
     private static final String PROJECT_VERSION = "0.1.0-SNAPSHOT";
 
-    @Parameters(paramLabel = "DIR", description = "the new project's folder (must not exist, or be empty); its name is the artifactId")
+    @Parameters(index = "0", paramLabel = "DIR", description = "the new project's folder (must not exist, or be empty); its name is the artifactId")
     Path directory;
 
     @Option(names = "--package", paramLabel = "P", description = "the Java package of the nodes and tests (default: GROUP.NAME)")
@@ -42,6 +44,10 @@ public final class NewNodesCommand implements Callable<Integer> {
 
     @Option(names = "--group", paramLabel = "G", defaultValue = "org.example", description = "the Maven groupId (default: ${DEFAULT-VALUE})")
     String groupId;
+
+    @Parameters(index = "1..*", paramLabel = "MAVEN_ARG", arity = "0..*",
+            description = "more arguments for Maven, after --: e.g. -- -Dmaven.repo.local=/srv/m2")
+    List<String> mavenArguments = new ArrayList<>();
 
     @Spec
     CommandSpec spec;
@@ -78,7 +84,9 @@ public final class NewNodesCommand implements Callable<Integer> {
         try {
             // an empty working folder: archetype:generate run beside a pom.xml would add the project to it as a module
             scratch = Files.createTempDirectory("fdnet-new-nodes");
-            run = MavenRun.run(scratch, generate(sdk, target.getParent(), artifactId, javaPackage, groupId), log, line -> { });
+            List<String> arguments = new ArrayList<>(generate(sdk, target.getParent(), artifactId, javaPackage, groupId));
+            arguments.addAll(mavenArguments);
+            run = MavenRun.run(scratch, arguments, log, line -> { });
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         } catch (IllegalStateException e) {

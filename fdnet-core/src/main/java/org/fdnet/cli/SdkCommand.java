@@ -6,8 +6,8 @@ import picocli.CommandLine.Spec;
 
 /** {@code fdnet sdk}: FDNet as artifacts a Java build depends on. */
 @Command(name = "sdk", mixinStandardHelpOptions = true,
-        description = {"FDNet as a Java SDK: the artifacts, a BOM, the starter archetype and the test kit a project of",
-            "your own builds on (docs/build-your-own-nodes.md)."},
+        description = "FDNet as a Java SDK: the artifacts, a BOM, the starter archetype and the test kits a project "
+                + "of your own builds on (docs/build-your-own-nodes.md).",
         subcommands = {SdkInstallCommand.class})
 public final class SdkCommand implements Runnable {
     @Spec

@@ -17,12 +17,12 @@ import picocli.CommandLine.Spec;
  * ({@code mvn -B -DskipTests install}), offline first and online only when an artifact is missing.
  */
 @Command(name = "install", mixinStandardHelpOptions = true,
-        description = {"Build this FDNet checkout and install its artifacts (the node API, the runtime, roq-sim with its",
-            "native library built for this machine, the test kits, the archetype and the BOM org.fdnet:fdnet-bom) into",
-            "your local Maven repository, so that a Maven project can depend on them. Runs, in the checkout:",
-            "  mvn -B -DskipTests install",
-            "offline first (-o), then online when an artifact is not in the local repository yet.",
-            "Prints a line per module installed and the lines to paste into your pom.xml."},
+        description = {"Build this FDNet checkout and install its artifacts into your local Maven repository, so "
+                + "that a Maven project can depend on them: the node API, the runtime, roq-sim with its native "
+                + "library built for this machine, the test kits, the archetype and the BOM org.fdnet:fdnet-bom.",
+            "Runs mvn -B -DskipTests install in the checkout, offline first (-o), then online when an artifact is "
+                + "not in the local repository yet. Prints a line per module installed, then the lines to paste "
+                + "into your pom.xml."},
         exitCodeListHeading = "Exit codes:%n",
         exitCodeList = {"0:installed", "1:the build failed (its last lines and the log are printed)"})
 public final class SdkInstallCommand implements Callable<Integer> {

@@ -6,7 +6,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
+import java.util.TreeMap;
 import java.util.TreeSet;
 import javax.xml.parsers.DocumentBuilderFactory;
 import org.junit.jupiter.api.Test;
@@ -18,7 +20,8 @@ import org.w3c.dom.NodeList;
 /**
  * The BOM (fdnet-core/bom) has no parent, so nothing keeps it in step with the reactor but this test: it must carry
  * the reactor's version and manage exactly the artifacts a user's project builds on — every module that ships
- * sources and javadoc jars (the bench modules, the launcher, the BOM and the archetype do not).
+ * sources and javadoc jars (the bench modules, the launcher, the BOM and the archetype do not) — and build with the
+ * parent's plugin versions.
  */
 class BomTest {
     private static final Path ROOT = Path.of("../..").toAbsolutePath().normalize();
@@ -42,6 +45,29 @@ class BomTest {
             managed.add(child(dependency, "groupId") + ":" + child(dependency, "artifactId"));
         }
         assertThat(managed).isEqualTo(userArtifacts());
+    }
+
+    @Test
+    void shouldBuildWithThePluginVersionsOfTheParent() throws Exception {
+        Element bom = pom(ROOT.resolve("fdnet-core/bom/pom.xml"));
+        Element parent = pom(ROOT.resolve("pom.xml"));
+        Map<String, String> parentVersions = new TreeMap<>();
+        NodeList parentPlugins = parent.getElementsByTagName("plugin");
+        for (int i = 0; i < parentPlugins.getLength(); i++) {
+            Element plugin = (Element) parentPlugins.item(i);
+            String version = child(plugin, "version");
+            if (version != null) {
+                parentVersions.put(child(plugin, "artifactId"), version.startsWith("${")
+                        ? property(parent, version.substring(2, version.length() - 1)) : version);
+            }
+        }
+        NodeList plugins = bom.getElementsByTagName("plugin");
+        assertThat(plugins.getLength()).as("plugins pinned in the BOM").isGreaterThan(0);
+        for (int i = 0; i < plugins.getLength(); i++) {
+            Element plugin = (Element) plugins.item(i);
+            String artifactId = child(plugin, "artifactId");
+            assertThat(child(plugin, "version")).as(artifactId).isEqualTo(parentVersions.get(artifactId));
+        }
     }
 
     /** groupId:artifactId of every reactor module that is a jar shipped with sources and javadoc. */

@@ -2,7 +2,6 @@ package org.fdnet.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -88,7 +87,8 @@ public final class NewNodesCommand implements Callable<Integer> {
             arguments.addAll(mavenArguments);
             run = MavenRun.run(scratch, arguments, log, line -> { });
         } catch (IOException e) {
-            throw new UncheckedIOException(e);
+            err.println("fdnet new nodes: cannot make a temporary working folder: " + e.getMessage());
+            return 1;
         } catch (IllegalStateException e) {
             err.println("fdnet new nodes: " + e.getMessage());
             return 1;

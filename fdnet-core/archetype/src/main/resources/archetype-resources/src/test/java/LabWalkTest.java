@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * networks/lab-walk.fdn on the simulated RoQ, stepped: the same run every time (course, sensor noise and the
- * network's clock are all seeded), many times faster than real time. A failing test prints the command that replays
+ * network's clock are all seeded), never waiting for the clock. A failing test prints the command that replays
  * its recording and the path of a picture of the robot at the failure.
  */
 @RoqTest

@@ -88,6 +88,7 @@ class SdkCommandsTest {
 
     @Test
     void sdkShouldStampTheProjectsVersionIntoTheClassPath() {
+        String home = System.getProperty("fdnet.home");
         System.setProperty("fdnet.home", Path.of("..").toAbsolutePath().normalize().toString());
         try {
             FdnetSdk sdk = FdnetSdk.current();
@@ -96,14 +97,28 @@ class SdkCommandsTest {
             assertThat(sdk.bomImport()).contains("<artifactId>fdnet-bom</artifactId>", "<version>" + sdk.version() + "</version>",
                     "<scope>import</scope>");
         } finally {
-            System.clearProperty("fdnet.home");
+            restore(home);
         }
     }
 
     @Test
     void sdkInstallShouldSayHowToRunItWithoutTheLauncher() {
+        String home = System.getProperty("fdnet.home");
         System.clearProperty("fdnet.home");
-        assertThat(cli.fdnet("sdk", "install")).isEqualTo(1);
-        assertThat(cli.output().strip()).isEqualTo("fdnet sdk install: fdnet.home is not set: run this command through bin/fdnet in an FDNet checkout");
+        try {
+            assertThat(cli.fdnet("sdk", "install")).isEqualTo(1);
+            assertThat(cli.output().strip())
+                    .isEqualTo("fdnet sdk install: fdnet.home is not set: run this command through bin/fdnet in an FDNet checkout");
+        } finally {
+            restore(home);
+        }
+    }
+
+    private static void restore(String home) {
+        if (home == null) {
+            System.clearProperty("fdnet.home");
+        } else {
+            System.setProperty("fdnet.home", home);
+        }
     }
 }

@@ -6,7 +6,6 @@ import java.awt.Rectangle;
 import java.awt.Window;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.AbstractButton;
 import javax.swing.JComboBox;
 import javax.swing.JComponent;
@@ -29,8 +28,8 @@ import javax.swing.text.JTextComponent;
 /**
  * What a person sees of a window, checked as a test: every input component (text fields, buttons, check boxes,
  * combo boxes, spinners, sliders, lists, tables, trees) is showing, has a size, and lies wholly inside the window's
- * visible area and inside every scroll pane's view around it; no label or button shows its text cut with an
- * ellipsis. Each tab of every tabbed pane is selected in turn (and the first one selected again), so the fields on
+ * visible area and inside every scroll pane's view around it; no label, button, table cell or column title shows
+ * its text cut with an ellipsis, and no shown row of a tree reaches past the view's right edge. Each tab of every tabbed pane is selected in turn (and the first one selected again), so the fields on
  * hidden tabs are looked at too. Call with the window shown at its default size, from any thread.
  *
  * <pre>
@@ -53,18 +52,11 @@ public final class WindowVisibility {
 
     /** One line per component that is hidden, clipped, zero-sized or cut; empty when everything can be seen. */
     public static List<String> problems(Window window) {
-        AtomicReference<List<String>> result = new AtomicReference<>();
-        Runnable check = () -> result.set(inspect(window));
-        if (SwingUtilities.isEventDispatchThread()) {
-            check.run();
-        } else {
-            try {
-                SwingUtilities.invokeAndWait(check);
-            } catch (Exception e) {
-                throw new IllegalStateException("could not inspect the window: " + e, e);
-            }
+        try {
+            return OnEdt.call(() -> inspect(window));
+        } catch (Exception e) {
+            throw new IllegalStateException("could not inspect the window: " + e, e);
         }
-        return result.get();
     }
 
     private static List<String> inspect(Window window) {
@@ -108,6 +100,12 @@ public final class WindowVisibility {
             String cut = cutText(c);
             if (cut != null && c.isShowing()) {
                 out.add(where + describe(c) + ": " + cut);
+            }
+            if (c instanceof JTable table && c.isShowing()) {
+                cutCells(table).forEach(p -> out.add(where + describe(c) + ": " + p));
+            }
+            if (c instanceof JTree tree && c.isShowing()) {
+                cutRows(tree).forEach(p -> out.add(where + describe(c) + ": " + p));
             }
             if (c instanceof Container child && !(c instanceof JComboBox<?>) && !(c instanceof JSpinner)) {
                 if (c instanceof JTabbedPane pane) {
@@ -181,6 +179,46 @@ public final class WindowVisibility {
             return "text cut by its container: '" + text + "' shows " + seen.width + " of " + needed + " px";
         }
         return null;
+    }
+
+    /** The header titles and cells of a table drawn narrower than their text. */
+    private static List<String> cutCells(JTable table) {
+        List<String> out = new ArrayList<>();
+        for (int col = 0; col < table.getColumnCount(); col++) {
+            int width = table.getColumnModel().getColumn(col).getWidth();
+            if (table.getTableHeader() != null) {
+                javax.swing.table.TableColumn tc = table.getColumnModel().getColumn(col);
+                javax.swing.table.TableCellRenderer hr = tc.getHeaderRenderer() != null ? tc.getHeaderRenderer()
+                        : table.getTableHeader().getDefaultRenderer();
+                Component h = hr.getTableCellRendererComponent(table, tc.getHeaderValue(), false, false, -1, col);
+                if (h.getPreferredSize().width > width) {
+                    out.add("column title cut: '" + tc.getHeaderValue() + "' needs " + h.getPreferredSize().width
+                            + " px, has " + width);
+                }
+            }
+            for (int row = 0; row < table.getRowCount(); row++) {
+                Component r = table.prepareRenderer(table.getCellRenderer(row, col), row, col);
+                if (r.getPreferredSize().width > width) {
+                    out.add("cell text cut: '" + table.getValueAt(row, col) + "' (row " + row + ") needs "
+                            + r.getPreferredSize().width + " px, has " + width);
+                }
+            }
+        }
+        return out;
+    }
+
+    /** The rows of a tree that reach past the right edge of the view it is scrolled in (or of itself). */
+    private static List<String> cutRows(JTree tree) {
+        List<String> out = new ArrayList<>();
+        Rectangle seen = tree.getVisibleRect();
+        for (int row = 0; row < tree.getRowCount(); row++) {
+            Rectangle r = tree.getRowBounds(row);
+            if (r != null && r.y < seen.y + seen.height && r.y + r.height > seen.y && r.x + r.width > seen.x + seen.width) {
+                out.add("row cut: '" + tree.getPathForRow(row).getLastPathComponent() + "' reaches " + (r.x + r.width)
+                        + " px, the view shows " + (seen.x + seen.width));
+            }
+        }
+        return out;
     }
 
     private static <T> void collect(Container root, Class<T> type, List<T> into) {

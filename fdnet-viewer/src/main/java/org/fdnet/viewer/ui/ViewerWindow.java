@@ -395,13 +395,9 @@ public final class ViewerWindow extends JFrame {
         }
     }
 
-    /** Adds series by name to a new plot (scripted use and tests, as the New plot button does for the tree's choice). */
-    public PlotView addToNewPlot(String title, List<String> selections) {
-        PlotView v = grid.addPlot(title);
-        List<NodeSelection> s = new ArrayList<>();
-        selections.forEach(n -> s.add(NodeSelection.parse(n)));
-        grid.addSeries(v, s);
-        return v;
+    /** The node tree (tests drag from it). */
+    NodeTree tree() {
+        return tree;
     }
 
     private void showLive() {

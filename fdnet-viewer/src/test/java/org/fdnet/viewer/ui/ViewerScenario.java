@@ -96,21 +96,37 @@ public final class ViewerScenario {
             check(refused == 0 && w.statusText().contains("'Pose/stability margin' is in m, the plot 'Pose/pitch, Pose/roll' in rad"),
                     "a series in m refused by a plot in rad: " + w.statusText());
             System.out.println("STEP mixed units refused: " + w.statusText());
-            PlotView added = onEdt(() -> w.addToNewPlot("margin again", List.of("Pose/stability margin")));
-            check(onEdt(added::unit).equals("m") && w.plots().plots().size() == 3, "a series added to a new plot takes its unit");
+            int scenarioRun = w.connection().runs().stream().filter(i -> i.runId() != roqRun).findFirst().orElseThrow().runId();
+            SwingUtilities.invokeAndWait(() -> w.chooseReplay(scenarioRun, 0, 60, "10×")); // its Datas in the tree
+            check(onEdt(() -> w.tree().choose(List.of("Pose/stability margin"))) == 1, "the margin chosen in the tree");
+            SwingUtilities.invokeAndWait(() -> click(w, "addToNewPlot"));
+            PlotView added = onEdt(() -> w.plots().plots().get(2));
+            check(onEdt(added::unit).equals("m") && w.plots().plots().size() == 3, "a series added to a new plot takes its"
+                    + " unit: " + onEdt(() -> titlesAndUnits(w)));
             wait(() -> onEdt(() -> added.plot().shownSeries().size()) == 1, "the new plot draws the series");
             System.out.println("STEP series added to a new plot in " + onEdt(added::unit));
+            PlotView dropped = onEdt(() -> w.plots().addAfter(added, "dropped"));
+            boolean took = onEdt(() -> {
+                java.awt.datatransfer.Clipboard drag = new java.awt.datatransfer.Clipboard("drag");
+                w.tree().choose(List.of("Pose/pitch"));
+                w.tree().getTransferHandler().exportToClipboard(w.tree(), drag, javax.swing.TransferHandler.COPY);
+                return dropped.getTransferHandler().importData(new javax.swing.TransferHandler.TransferSupport(dropped,
+                        drag.getContents(null)));
+            });
+            check(took && onEdt(dropped::unit).equals("rad") && onEdt(dropped::entries).size() == 1,
+                    "a Data dragged from the tree into an empty plot: " + onEdt(() -> titlesAndUnits(w)));
+            System.out.println("STEP dragged into a plot: " + onEdt(dropped::entries));
+            SwingUtilities.invokeAndWait(() -> w.plots().removePlot(dropped));
             SwingUtilities.invokeAndWait(() -> w.plots().removePlot(margin));
-            check(w.plots().plots().size() == 2, "a plot removed");
+            check(w.plots().plots().size() == 2, "two plots removed");
             SwingUtilities.invokeAndWait(() -> w.plots().plots().get(0).plot().setPaused(false));
             w.screenshot(Path.of(args[0]));
             System.out.println("STEP window screenshot");
             Path layout = Path.of(args[0]).resolveSibling("saved.layout");
             SwingUtilities.invokeAndWait(() -> w.saveLayout(layout));
             String saved = onEdt(() -> titlesAndUnits(w));
-            int run = w.connection().runs().stream().filter(i -> i.runId() != roqRun).findFirst().orElseThrow().runId();
             SwingUtilities.invokeAndWait(() -> {
-                w.chooseReplay(run, 0, 60, "10×");
+                w.chooseReplay(scenarioRun, 0, 60, "10×");
                 w.startReplay();
             });
             Replay r = w.replay();
@@ -202,6 +218,18 @@ public final class ViewerScenario {
 
     private static <T> T onEdt(java.util.concurrent.Callable<T> c) throws Exception {
         return OnEdt.call(c);
+    }
+
+    private static void click(java.awt.Container root, String name) {
+        for (java.awt.Component c : root.getComponents()) {
+            if (c instanceof javax.swing.AbstractButton b && name.equals(b.getName())) {
+                b.doClick();
+                return;
+            }
+            if (c instanceof java.awt.Container child) {
+                click(child, name);
+            }
+        }
     }
 
     private interface Condition {

@@ -38,7 +38,7 @@ class ViewerWindowDisplayTest {
             assertThat(done).as(out).isTrue();
             assertThat(out).as(out).contains("STEP live values drawn", "STEP one plot per unit", "STEP Japanese name legible",
                     "STEP every control visible at 1200x820", "STEP paused, zoomed and cursor linked",
-                    "STEP mixed units refused", "STEP series added to a new plot in m", "STEP replay",
+                    "STEP mixed units refused", "STEP series added to a new plot in m", "STEP dragged into a plot", "STEP replay",
                     "STEP layout reopened", "STEP RoQ layout", "STEP command screenshot", "STEP unknown node refused",
                     "STEP all passed");
             assertThat(p.exitValue()).as(out).isZero();

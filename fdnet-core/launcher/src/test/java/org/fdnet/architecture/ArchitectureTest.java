@@ -1,5 +1,6 @@
 package org.fdnet.architecture;
 
+import static com.tngtech.archunit.base.DescribedPredicate.not;
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
 import static com.tngtech.archunit.library.Architectures.layeredArchitecture;
 import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
@@ -11,6 +12,7 @@ import static org.fdnet.architecture.FdnetModules.inModulePackages;
 import com.tngtech.archunit.core.domain.JavaClasses;
 import com.tngtech.archunit.core.importer.ClassFileImporter;
 import com.tngtech.archunit.lang.ArchRule;
+import java.util.List;
 import java.util.Set;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.BeforeAll;
@@ -39,6 +41,17 @@ class ArchitectureTest {
     }
 
     @Test
+    void shouldKeepEveryPackageInTheOneModuleThatOwnsIt() {
+        List<String> misplaced = classes.stream()
+                .filter(type -> FdnetModules.builtBy(type).filter(folder -> !folder.equals(FdnetModules.moduleOf(type)))
+                        .isPresent())
+                .map(type -> type.getName() + " is built by " + FdnetModules.builtBy(type).orElseThrow()
+                        + " but its package belongs to " + FdnetModules.moduleOf(type))
+                .distinct().sorted().toList();
+        assertThat(misplaced).as("classes outside the module that owns their package (a split package)").isEmpty();
+    }
+
+    @Test
     void shouldHaveNoPackageCycle() {
         slices().matching("org.fdnet.(**)").namingSlices("$1")
                 .should().beFreeOfCycles()
@@ -59,7 +72,7 @@ class ArchitectureTest {
 
     @Test
     void shouldUseHdrHistogramInBenchModulesOnly() {
-        noClasses().that(com.tngtech.archunit.base.DescribedPredicate.not(inABenchModule()))
+        noClasses().that(not(inABenchModule()))
                 .should().dependOnClassesThat().resideInAPackage("org.HdrHistogram..")
                 .check(classes);
     }
@@ -67,9 +80,10 @@ class ArchitectureTest {
     /** The layering of docs/architecture.md, bottom first. A layer may use the ones its line names. */
     static ArchRule layers() {
         return layeredArchitecture().consideringOnlyDependenciesInLayers()
-                .layer("Api").definedBy(inModule("fdnet-core/api"))
+                .layer("Api").definedBy(inModule("fdnet-core/api").and(not(inModulePackages("fdnet-core/api",
+                        "org.fdnet.runtime"))))
                 .layer("Files").definedBy(inModulePackages(CORE, "org.fdnet.netinfo.xml..", "org.fdnet.logging"))
-                .layer("Runtime API").definedBy(inModulePackages(CORE, "org.fdnet.runtime"))
+                .layer("Runtime API").definedBy(inModulePackages("fdnet-core/api", "org.fdnet.runtime"))
                 .layer("Nodes").definedBy(inModulePackages(CORE, "org.fdnet.runtime.library"))
                 .layer("Engine").definedBy(inModulePackages(CORE, "org.fdnet.runtime.engine",
                         "org.fdnet.runtime.loading"))

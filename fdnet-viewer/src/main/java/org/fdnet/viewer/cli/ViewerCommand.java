@@ -18,16 +18,18 @@ import picocli.CommandLine.Option;
 
 /** {@code fdnet viewer}: the Network State Viewer on a logger's viewer service. */
 @Command(name = "viewer", mixinStandardHelpOptions = true,
-        description = {"The Network State Viewer: plots of Data values on one linked time axis, live through the logger's",
-            "monitor stream, a history of a time range, or the replay of a recorded run at 1x, 2x or 10x; layouts saved",
-            "and reopened (--layout), CSV export. A RoQ run opens with its ready layout."})
+        description = {"The Network State Viewer: plots of Data values on one linked time axis,",
+            "live through the logger's monitor stream, a history of a time range, or the",
+            "replay of a recorded run at 1x, 2x or 10x. Layouts are saved and reopened",
+            "(--layout FILE); CSV export. A RoQ run opens with its ready layout."})
 public final class ViewerCommand implements Callable<Integer> {
     @Option(names = "--logger", defaultValue = "127.0.0.1:5556", paramLabel = "HOST:PORT",
             description = "the logger's viewer (sender) service (default ${DEFAULT-VALUE})")
     String logger;
 
     @Option(names = "--nodes", split = ",", paramLabel = "NODE",
-            description = "Datas to plot live: Module/Node or Node, optionally with a unit, e.g. 'Balance/margin[m]'")
+            description = "Datas to plot live, one plot per unit: Module/Node or Node, optionally with a unit,"
+                    + " e.g. 'Balance/margin[m]'")
     List<String> nodes = new ArrayList<>();
 
     @Option(names = "--layout", paramLabel = "FILE",

@@ -21,7 +21,8 @@ import org.fdnet.testing.WindowVisibility;
 /**
  * Opens the configuration window as {@code fdnet logger --gui --config FILE} does, on a real display, and prints
  * {@code VISIBLE} or {@code PROBLEM ...} lines ({@link WindowVisibility}). With {@code change}, it then types an
- * invalid batch size (printing the reason shown at the field), a valid one, and presses Save; with
+ * invalid batch size (printing the reason shown at the field, and taking the screenshot), a valid one, and
+ * presses Save; with
  * {@code reopen}, it prints the batch size the field shows. Arguments: CONFIG_FILE change|reopen [SCREENSHOT_PNG]
  */
 public final class ConfigPanelVisibilityScenario {
@@ -51,6 +52,11 @@ public final class ConfigPanelVisibilityScenario {
                 return null;
             });
             System.out.println("START REFUSED " + onEdt(() -> find(panel, "message", JLabel.class).getText()));
+            if (args.length > 2) {
+                Thread.sleep(300);
+                Rectangle r = onEdt(() -> new Rectangle(window.getLocationOnScreen(), window.getSize()));
+                ImageIO.write(new Robot().createScreenCapture(r), "png", Path.of(args[2]).toFile());
+            }
             onEdt(() -> {
                 batch.setText("750");
                 return null;
@@ -58,11 +64,6 @@ public final class ConfigPanelVisibilityScenario {
             System.out.println("HELP " + onEdt(() -> find(panel, LoggerSetting.WRITER_BATCH_SIZE.key() + ".help",
                     JLabel.class).getText()));
             System.out.println("SAVED " + onEdt(() -> panel.save(file)));
-            if (args.length > 2) {
-                Thread.sleep(300);
-                Rectangle r = onEdt(() -> new Rectangle(window.getLocationOnScreen(), window.getSize()));
-                ImageIO.write(new Robot().createScreenCapture(r), "png", Path.of(args[2]).toFile());
-            }
         } else {
             System.out.println("BATCH " + onEdt(batch::getText));
         }

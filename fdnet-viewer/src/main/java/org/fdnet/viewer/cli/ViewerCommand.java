@@ -101,7 +101,7 @@ public final class ViewerCommand implements Callable<Integer> {
             window.screenshot(screenshot);
             Replay r = window.replay();
             System.out.printf("screenshot written to %s (live: %,d values, %d frames painted%s)%n", screenshot,
-                    window.liveData().acceptedEvents(), window.plots().frames(),
+                    window.liveData().acceptedEvents(), window.plots().framesPainted(),
                     r == null ? "" : String.format("; replay: %,d of %,d values", r.delivered(), r.total()));
             SwingUtilities.invokeAndWait(window::dispose);
             return 0;

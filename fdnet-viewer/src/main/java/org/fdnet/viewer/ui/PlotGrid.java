@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.function.Consumer;
 import javax.swing.JPanel;
+import javax.swing.Timer;
 import org.fdnet.viewer.data.NodeSelection;
 import org.fdnet.viewer.data.PlotData;
 import org.fdnet.viewer.data.Series;
@@ -26,6 +27,7 @@ public final class PlotGrid extends JPanel {
     private final Consumer<String> say;
     private final Consumer<List<NodeSelection>> added;
     private final List<PlotView> plots = new ArrayList<>();
+    private final Timer frames;
     private PlotData data;
     private boolean legendVisible = true;
 
@@ -41,6 +43,24 @@ public final class PlotGrid extends JPanel {
         this.added = added;
         this.axis = new TimeAxis(data::lastTime);
         setName("plots");
+        // one tick then one repaint of every plot: all plots of a frame end at the same instant
+        frames = new Timer(1000 / PlotPanel.FRAMES_PER_SECOND, e -> {
+            axis.tick();
+            repaint();
+        });
+        frames.setCoalesce(true);
+    }
+
+    @Override
+    public void addNotify() {
+        super.addNotify();
+        frames.start();
+    }
+
+    @Override
+    public void removeNotify() {
+        frames.stop();
+        super.removeNotify();
     }
 
     public TimeAxis axis() {
@@ -159,7 +179,7 @@ public final class PlotGrid extends JPanel {
     }
 
     /** Frames painted by all plots. */
-    public long frames() {
+    public long framesPainted() {
         return plots.stream().mapToLong(p -> p.plot().frames()).sum();
     }
 

@@ -36,7 +36,8 @@ import org.fdnet.viewer.data.Series;
  * share: live, the window ends at the newest sample; paused, it stays where it is. Mouse wheel zooms, dragging
  * pans (and pauses), space pauses and resumes, double click returns to live, and the mouse places the cursor.
  * Each series is reduced to a min/max per pixel column, so a frame costs the visible samples once, not a shape
- * per sample. Repaints at {@link #FRAMES_PER_SECOND} while shown.
+ * per sample. On a time axis of its own it repaints itself at {@link #FRAMES_PER_SECOND} while shown; on a shared
+ * one, its {@link PlotGrid} does, for all its plots at once.
  */
 public final class PlotPanel extends JComponent {
     public static final int FRAMES_PER_SECOND = 30;
@@ -54,6 +55,7 @@ public final class PlotPanel extends JComponent {
     private static final Stroke SMOOTH = new BasicStroke(1.3f);
 
     private final TimeAxis axis;
+    private final boolean ownAxis;
     private final Function<PlotData, List<Series>> choice;
     private final Timer repaint;
     private final AtomicLong frames = new AtomicLong();
@@ -66,15 +68,23 @@ public final class PlotPanel extends JComponent {
     private int[] xs = new int[0];
     private int[] ys = new int[0];
 
-    /** A plot of every series of {@code data}, on a time axis of its own. */
+    /** A plot of every series of {@code data}, on a time axis of its own, repainting itself at its frame rate. */
     public PlotPanel(PlotData data) {
-        this(data, new TimeAxis(data::lastTime), PlotData::series);
+        this(data, new TimeAxis(data::lastTime), PlotData::series, true);
     }
 
-    /** A plot of the series {@code choice} picks from the data, on a shared time axis. */
+    /**
+     * A plot of the series {@code choice} picks from the data, on a shared time axis whose owner ticks it and
+     * repaints the plots ({@link PlotGrid}).
+     */
     public PlotPanel(PlotData data, TimeAxis axis, Function<PlotData, List<Series>> choice) {
+        this(data, axis, choice, false);
+    }
+
+    private PlotPanel(PlotData data, TimeAxis axis, Function<PlotData, List<Series>> choice, boolean ownAxis) {
         this.data = data;
         this.axis = axis;
+        this.ownAxis = ownAxis;
         this.choice = choice;
         setPreferredSize(new Dimension(900, 560));
         setMinimumSize(new Dimension(200, 90));
@@ -135,7 +145,9 @@ public final class PlotPanel extends JComponent {
     @Override
     public void addNotify() {
         super.addNotify();
-        repaint.start();
+        if (ownAxis) {
+            repaint.start();
+        }
     }
 
     @Override
@@ -244,6 +256,9 @@ public final class PlotPanel extends JComponent {
         g.setColor(Color.WHITE);
         g.fillRect(0, 0, width, height);
         g.setFont(getFont() != null ? getFont().deriveFont(11f) : new Font(Font.SANS_SERIF, Font.PLAIN, 11));
+        if (ownAxis) {
+            axis.tick();
+        }
         long end = axis.viewEnd();
         long window = axis.windowMicros();
         long start = end - window;
@@ -387,7 +402,7 @@ public final class PlotPanel extends JComponent {
         g.setColor(new Color(0xc8, 0xcc, 0xd2));
         g.drawRect(LEFT, top, w, h);
         FontMetrics fm = g.getFontMetrics();
-        int ticks = Math.max(2, Math.min(6, h / 40));
+        int ticks = Math.max(3, Math.min(6, h / 30));
         double step = niceStep((range[1] - range[0]) / ticks);
         for (double v = Math.ceil(range[0] / step) * step; v <= range[1]; v += step) {
             int y = top + h - (int) ((v - range[0]) / (range[1] - range[0]) * h);

@@ -84,6 +84,6 @@ final class RunTableModel extends AbstractTableModel {
             return "…";
         }
         long s = Math.round(micros / 1e6);
-        return s < 60 ? s + " s" : s / 60 + " min " + s % 60 + " s";
+        return s < 600 ? s + " s" : s / 60 + " min";
     }
 }

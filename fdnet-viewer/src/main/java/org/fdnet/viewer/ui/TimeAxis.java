@@ -13,6 +13,7 @@ public final class TimeAxis {
     public static final long NO_CURSOR = Long.MIN_VALUE;
 
     private volatile LongSupplier newest;
+    private volatile long frameEnd = Long.MIN_VALUE;
     private volatile long windowMicros = 10_000_000;
     private volatile boolean paused;
     private volatile long pausedEnd;
@@ -26,6 +27,16 @@ public final class TimeAxis {
     /** Where the newest value's time comes from (the data the window shows). */
     public void follow(LongSupplier newestTime) {
         newest = newestTime;
+        frameEnd = Long.MIN_VALUE;
+    }
+
+    /**
+     * Takes the newest value's time as the right edge of the next frame: every plot painted until the next tick
+     * shows the same window, even while values arrive (a replay at 10×) during the painting of one plot after the
+     * other. Called on the event thread before each frame.
+     */
+    public void tick() {
+        frameEnd = newest.getAsLong();
     }
 
     /** Paused, the view keeps its place while values keep arriving; resumed, it follows the newest again. */
@@ -71,7 +82,7 @@ public final class TimeAxis {
         if (paused) {
             return pausedEnd;
         }
-        long last = newest.getAsLong();
+        long last = frameEnd != Long.MIN_VALUE ? frameEnd : newest.getAsLong();
         return last == Long.MIN_VALUE ? System.currentTimeMillis() * 1000 : last;
     }
 

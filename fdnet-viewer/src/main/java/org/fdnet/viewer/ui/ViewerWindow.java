@@ -68,7 +68,13 @@ public final class ViewerWindow extends JFrame {
     private final PlotGrid grid;
     private final NodeTree tree = new NodeTree(units);
     private final RunTableModel runModel = new RunTableModel();
-    private final JTable runTable = new JTable(runModel);
+    private final JTable runTable = new JTable(runModel) {
+        @Override
+        public String getToolTipText(java.awt.event.MouseEvent e) {
+            int row = rowAtPoint(e.getPoint());
+            return row < 0 ? super.getToolTipText(e) : runModel.run(row).toString(); // network, hosts, start, id in full
+        }
+    };
     private final JLabel status = new JLabel(" ");
     private final JComboBox<String> speed = new JComboBox<>(SPEEDS);
     private final JTextField replayFrom = new JTextField("0", 5);
@@ -92,7 +98,7 @@ public final class ViewerWindow extends JFrame {
         registerActions();
         add(actions.toolBar(), BorderLayout.NORTH);
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, picker(), grid);
-        split.setDividerLocation(340);
+        split.setDividerLocation(370);
         add(split, BorderLayout.CENTER);
         JPanel south = new JPanel(new BorderLayout());
         south.add(replayBar(), BorderLayout.NORTH);
@@ -219,10 +225,10 @@ public final class ViewerWindow extends JFrame {
         p.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
         runTable.setName("runs");
         runTable.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
-        runTable.getColumnModel().getColumn(0).setPreferredWidth(120);
-        runTable.getColumnModel().getColumn(1).setPreferredWidth(50);
-        runTable.getColumnModel().getColumn(2).setPreferredWidth(75);
-        runTable.getColumnModel().getColumn(3).setPreferredWidth(75);
+        runTable.getColumnModel().getColumn(0).setPreferredWidth(160);
+        runTable.getColumnModel().getColumn(1).setPreferredWidth(44);
+        runTable.getColumnModel().getColumn(2).setPreferredWidth(72);
+        runTable.getColumnModel().getColumn(3).setPreferredWidth(68);
         runTable.setToolTipText("choose a run: its Datas show in the tree below, and Play replays it");
         runTable.getSelectionModel().addListSelectionListener(e -> {
             if (!e.getValueIsAdjusting() && runTable.getSelectedRow() >= 0) {
@@ -231,7 +237,7 @@ public final class ViewerWindow extends JFrame {
         });
         JScrollPane runs = new JScrollPane(runTable);
         runs.setBorder(BorderFactory.createTitledBorder("Recorded runs"));
-        runs.setPreferredSize(new Dimension(330, 150));
+        runs.setPreferredSize(new Dimension(360, 150));
         p.add(runs, BorderLayout.NORTH);
         JScrollPane nodes = new JScrollPane(tree);
         nodes.setBorder(BorderFactory.createTitledBorder("Datas of the run (drag into a plot)"));
@@ -295,9 +301,9 @@ public final class ViewerWindow extends JFrame {
         if (!runList.isEmpty()) {
             runTable.setRowSelectionInterval(0, 0);
         }
-        status.setText(String.format("%d runs recorded%s; plotting %d node(s) live — drag Datas from the tree into a"
-                + " plot", runList.size(), runList.isEmpty() ? "" : ", newest: " + runList.get(0),
-                live.trackedSources().length));
+        status.setText(String.format("%d run%s recorded%s; plotting %d node(s) live — drag Datas from the tree into a"
+                + " plot", runList.size(), runList.size() == 1 ? "" : "s", runList.isEmpty() ? "" : ", newest: "
+                + runList.get(0), live.trackedSources().length));
         legibleNames(nodes);
         measureLengths(runList);
     }
@@ -507,16 +513,6 @@ public final class ViewerWindow extends JFrame {
             status.setText("replay range: 'from' and 'to' must be seconds, e.g. 0 and 60");
             return;
         }
-        String ready = "";
-        if (!layoutChosen) {
-            Optional<ViewerLayout> fits = ReadyLayouts.forNodes(run.nodes().stream().map(LoggerConnection::label).toList());
-            if (fits.isPresent()) {
-                grid.apply(fits.get());
-                legend.setSelected(fits.get().legendVisible());
-                layoutChosen = true;
-                ready = " in its ready layout";
-            }
-        }
         try {
             Replay r = ReplayLoader.load(connection, run, fromS, toS, chosenSpeed(), replayed);
             Replay old = replay.getAndSet(r);
@@ -524,8 +520,18 @@ public final class ViewerWindow extends JFrame {
                 old.stop();
             }
             pause.setSelected(false);
-            grid.show(replayed);
+            grid.show(replayed); // before a ready layout is applied: its Datas are replayed, not monitored live
             grid.axis().setPaused(false);
+            String ready = "";
+            if (!layoutChosen) {
+                Optional<ViewerLayout> fits = ReadyLayouts.forNodes(run.nodes().stream().map(LoggerConnection::label).toList());
+                if (fits.isPresent()) {
+                    grid.apply(fits.get());
+                    legend.setSelected(fits.get().legendVisible());
+                    layoutChosen = true;
+                    ready = " in its ready layout";
+                }
+            }
             r.start();
             String range = fromS < 0 ? String.format("its last %.1f s", -fromS) : String.format("%.1f s .. %.1f s", fromS, toS);
             status.setText(String.format("replaying %s (run %d), %s: %,d values at %s%s", run.network().isEmpty()

@@ -65,7 +65,7 @@ public final class ViewerScenario {
             int roqRun = recordRoqRun(logger);
             ViewerWindow w = ViewerWindow.open(logger.viewerAddress(),
                     List.of("Pose/pitch[rad]", "Pose/roll[rad]", "Pose/stability margin[m]"));
-            wait(() -> w.liveData().acceptedEvents() > 100 && w.plots().frames() > 5, "live values drawn");
+            wait(() -> w.liveData().acceptedEvents() > 100 && w.plots().framesPainted() > 5, "live values drawn");
             System.out.println("STEP live values drawn: " + w.liveData().acceptedEvents() + " values, "
                     + w.liveData().series().size() + " series");
             check(onEdt(() -> titlesAndUnits(w)).equals("Pose/pitch, Pose/roll·rad|Pose/stability margin·m"), "one live plot per unit: "
@@ -157,6 +157,9 @@ public final class ViewerScenario {
                     && onEdt(() -> roq.plots().plots().get(1).plot().shownSeries().get(0).unit()).equals("N"),
                     "four sole forces in N");
             check(onEdt(() -> roq.plots().plots().get(4).plot().shownSeries().size()) == 2, "the track's x and y only");
+            check(roq.liveData().trackedSources().length == 0, "the ready layout's Datas are replayed, not monitored live");
+            check(onEdt(() -> roq.plots().plots().stream().map(v -> v.plot().viewEnd()).distinct().count()) == 1,
+                    "every plot of a frame ends at the same instant");
             List<String> roqProblems = WindowVisibility.problems(roq);
             check(roqProblems.isEmpty(), "every control of the RoQ layout visible: " + roqProblems);
             roq.screenshot(Path.of(args[0]).resolveSibling("viewer-roq.png"));

@@ -303,8 +303,8 @@ public final class PlotPanel extends JComponent {
                 Color c = PALETTE[colour++ % PALETTE.length];
                 paintSeries(g, summary, c, top, laneHeight, plotWidth, range);
                 newest = Math.max(newest, summary.newest());
-                Series.Sample near = cursorShown ? s.nearest(cursor) : null;
-                legend.add(new LegendRow(s, c, near == null ? "" : String.format("%.6g%s", near.value(),
+                Series.Sample near = cursorShown ? s.heldAt(cursor) : null;
+                legend.add(new LegendRow(s, c, near == null ? "" : String.format("%.4g%s", near.value(),
                         s.unit().isEmpty() ? "" : " " + s.unit())));
             }
             lane++;
@@ -320,7 +320,7 @@ public final class PlotPanel extends JComponent {
                     bottom);
         } else if (cursorShown) {
             List<String> lines = new ArrayList<>();
-            legend.forEach(r -> lines.add(r.series().name() + " = " + r.value()));
+            legend.forEach(r -> lines.add(r.series().name() + " = " + (r.value().isEmpty() ? "—" : r.value())));
             paintReadout(g, LEFT + (int) ((double) (cursor - start) / window * plotWidth), cursor, lines, plotWidth, bottom);
         }
         newestPainted = newest;
@@ -330,31 +330,32 @@ public final class PlotPanel extends JComponent {
     private record LegendRow(Series series, Color colour, String value) {
     }
 
-    /** The legend beside the lines: a row per series, its value at the cursor under its name. */
+    /** The legend beside the lines: a row per series, with its value at the cursor at the row's right end. */
     private void paintLegend(Graphics2D g, List<LegendRow> rows, long cursor, int x, int w, int bottom) {
         FontMetrics fm = g.getFontMetrics();
         int y = TOP + fm.getAscent();
-        if (cursor != TimeAxis.NO_CURSOR) {
+        boolean values = cursor != TimeAxis.NO_CURSOR;
+        if (values) {
             g.setColor(Color.DARK_GRAY);
             g.drawString("at " + CLOCK.format(Instant.ofEpochSecond(cursor / 1_000_000, (cursor % 1_000_000) * 1000)), x, y);
             y += fm.getHeight() + 2;
         }
-        int rowHeight = fm.getHeight() * (cursor != TimeAxis.NO_CURSOR ? 2 : 1);
         for (int i = 0; i < rows.size(); i++) {
-            if (y + rowHeight > bottom && i < rows.size() - 1) {
+            if (y + fm.getHeight() > bottom && i < rows.size() - 1) {
                 g.setColor(Color.GRAY);
                 g.drawString("… " + (rows.size() - i) + " more", x, y);
                 return;
             }
             LegendRow r = rows.get(i);
+            String value = values ? (r.value().isEmpty() ? "—" : r.value()) : "";
+            int valueWidth = value.isEmpty() ? 0 : fm.stringWidth(value) + 8;
             g.setColor(r.colour());
             g.fillRect(x, y - 8, 8, 8);
             g.setColor(Color.DARK_GRAY);
-            g.drawString(fit(fm, r.series().name(), w - 14), x + 12, y);
-            if (cursor != TimeAxis.NO_CURSOR) {
-                y += fm.getHeight();
+            g.drawString(fit(fm, r.series().name(), w - 14 - valueWidth), x + 12, y);
+            if (!value.isEmpty()) {
                 g.setColor(Color.BLACK);
-                g.drawString(r.value().isEmpty() ? "—" : r.value(), x + 12, y);
+                g.drawString(value, x + w - fm.stringWidth(value) - 4, y);
             }
             y += fm.getHeight() + 1;
         }

@@ -162,7 +162,11 @@ public final class ViewerScenario {
                     "every plot of a frame ends at the same instant");
             List<String> roqProblems = WindowVisibility.problems(roq);
             check(roqProblems.isEmpty(), "every control of the RoQ layout visible: " + roqProblems);
+            SwingUtilities.invokeAndWait(() -> roq.plots().plots().get(1).plot().setCursorX(560));
             roq.screenshot(Path.of(args[0]).resolveSibling("viewer-roq.png"));
+            SwingUtilities.invokeAndWait(() -> roq.plots().setLegendVisible(false));
+            check(onEdt(() -> roq.plots().plots().stream().noneMatch(v -> v.plot().legendVisible())), "every legend hidden");
+            roq.screenshot(Path.of(args[0]).resolveSibling("viewer-roq-no-legend.png"));
             System.out.println("STEP RoQ layout: " + roqPlots);
             SwingUtilities.invokeAndWait(roq::dispose);
             int exit = new CommandLine(new ViewerCommand()).execute("--logger", logger.viewerAddress(), "--nodes",

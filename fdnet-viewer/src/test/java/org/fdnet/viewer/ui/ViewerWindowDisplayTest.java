@@ -52,5 +52,7 @@ class ViewerWindowDisplayTest {
         assertThat(ImageIO.read(window.toFile()).getHeight()).isGreaterThan(500);
         Files.copy(command, Path.of("target", "viewer.png"), StandardCopyOption.REPLACE_EXISTING);
         Files.copy(folder.resolve("viewer-roq.png"), Path.of("target", "viewer-roq.png"), StandardCopyOption.REPLACE_EXISTING);
+        Files.copy(folder.resolve("viewer-roq-no-legend.png"), Path.of("target", "viewer-roq-no-legend.png"),
+                StandardCopyOption.REPLACE_EXISTING);
     }
 }

@@ -12,7 +12,7 @@ public enum LoggerSetting {
     DATABASE_DIRECTORY("database.embeddedDirectory", Panel.DATABASE, "~/.fdnet/logger-db", "Data folder", "",
             "where the embedded database keeps its files", "", false),
     DATABASE_FSYNC("database.embeddedFsync", Panel.DATABASE, "true", "Fsync commits", "",
-            "false: faster, for throwaway runs only",
+            "off: faster, for throwaway runs only",
             "With false, an OS crash or power loss can lose acknowledged events or corrupt the data folder.", false),
     DATABASE_URL("database.url", Panel.DATABASE, "", "JDBC URL", "",
             "an external server; overrides host, port and name", "", false),

@@ -482,15 +482,20 @@ public final class ViewerWindow extends JFrame {
     private void exportCsv() {
         JFileChooser chooser = new JFileChooser();
         chooser.setSelectedFile(new java.io.File("fdnet-viewer.csv"));
-        if (chooser.showSaveDialog(this) != JFileChooser.APPROVE_OPTION) {
-            return;
+        if (chooser.showSaveDialog(this) == JFileChooser.APPROVE_OPTION) {
+            exportCsv(chooser.getSelectedFile().toPath());
         }
+    }
+
+    /** Writes every plotted series' values in the visible time window as CSV; answers the rows written, -1 when it failed. */
+    public long exportCsv(Path file) {
         try {
-            long rows = CsvExport.write(chooser.getSelectedFile().toPath(), grid.shownSeries(), grid.axis().viewStart(),
-                    grid.axis().viewEnd());
-            status.setText(String.format("exported %,d values of the visible window to %s", rows, chooser.getSelectedFile()));
+            long rows = CsvExport.write(file, grid.shownSeries(), grid.axis().viewStart(), grid.axis().viewEnd());
+            status.setText(String.format("exported %,d values of the visible window to %s", rows, file));
+            return rows;
         } catch (IOException e) {
-            status.setText("CSV export to " + chooser.getSelectedFile() + " failed: " + e.getMessage());
+            status.setText("CSV export to " + file + " failed: " + e.getMessage());
+            return -1;
         }
     }
 

@@ -134,6 +134,15 @@ public final class ViewerScenario {
             check(r.await(60_000), "replay finished");
             check(w.replayData().acceptedEvents() == r.total(), "replay plotted every value");
             check(onEdt(() -> titlesAndUnits(w)).equals(saved), "a replay keeps the plots chosen");
+            Path csv = layout.resolveSibling("replay.csv");
+            SwingUtilities.invokeAndWait(() -> w.plots().axis().showRange(w.replayData().firstTime(), w.replayData().lastTime()));
+            long rows = onEdt(() -> w.exportCsv(csv));
+            List<String> lines = Files.readAllLines(csv);
+            check(rows > 100 && lines.size() == rows + 1 && lines.get(0).equals("series,unit,time_us,value")
+                    && lines.stream().anyMatch(l -> l.startsWith("Pose/pitch,rad,"))
+                    && lines.stream().anyMatch(l -> l.startsWith("Pose/stability margin,m,")),
+                    "CSV export of the plotted series: " + rows + " rows, " + (lines.isEmpty() ? "" : lines.get(0)));
+            System.out.println("STEP CSV export: " + rows + " rows");
             System.out.println("STEP replay " + r.total() + " values");
             SwingUtilities.invokeAndWait(w::dispose);
 

@@ -140,7 +140,7 @@ public final class LoggerConnection implements AutoCloseable {
             }
         }
         throw new IllegalArgumentException("node '" + selection.name() + "': the logger at " + address
-                + " knows no Data of that name (fdnet viewer lists them in its node picker)");
+                + " knows no Data of that name (fdnet viewer shows them in its tree of the run's Datas)");
     }
 
     /** Tracks the nodes in the live data and starts monitoring them; answers the resolved nodes. */

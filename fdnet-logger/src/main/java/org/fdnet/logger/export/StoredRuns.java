@@ -125,6 +125,19 @@ public final class StoredRuns {
         return types;
     }
 
+    /** The common-clock times (µs) of the run's first and last value, Datas' and Relations'; {0, 0} when it has none. */
+    public long[] timeSpan(RecordedRun run) throws SQLException {
+        String streams = join(run.streams());
+        String sql = "SELECT min(t), max(t) FROM (SELECT d.time - r.clock_offset AS t FROM datavalue_log d"
+                + " JOIN fdnet_node n ON n.sourceid = d.sourceid JOIN fdnet_run r ON r.run_id = n.run_id WHERE r.run_id IN ("
+                + streams + ") UNION ALL SELECT p.time - r.clock_offset FROM procvalue_log p JOIN fdnet_node n"
+                + " ON n.sourceid = p.sourceid JOIN fdnet_run r ON r.run_id = n.run_id WHERE r.run_id IN (" + streams + ")) v";
+        try (Statement s = connection.createStatement(); ResultSet rs = s.executeQuery(sql)) {
+            rs.next();
+            return new long[] {rs.getLong(1), rs.getLong(2)};
+        }
+    }
+
     private int single(String sql) throws SQLException {
         try (Statement s = connection.createStatement(); ResultSet rs = s.executeQuery(sql)) {
             rs.next();

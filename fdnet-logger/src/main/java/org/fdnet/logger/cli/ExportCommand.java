@@ -61,6 +61,10 @@ public final class ExportCommand implements Callable<Integer> {
             description = "up to this many seconds after the run's first value; negative: before its last")
     Double until;
 
+    @Option(names = "--scene", paramLabel = "KEY=VALUE", description = "an option of a run's 3D scene in MCAP, e.g."
+            + " course=crossing (the RoQ course whose fragile cells to draw: the database does not record it)")
+    java.util.Map<String, String> scene = new java.util.HashMap<>();
+
     @Option(names = "--db", paramLabel = "URL", description = "external database jdbc:postgresql://HOST:PORT/DB "
             + "(default: the embedded PostgreSQL in ~/.fdnet/logger-db; stop a logger using it first)")
     String db;
@@ -138,7 +142,7 @@ public final class ExportCommand implements Callable<Integer> {
             ExportSummary summary;
             try (OutputStream out = Files.newOutputStream(file)) {
                 RunSink sink = switch (format) {
-                    case MCAP -> new McapRunSink(out);
+                    case MCAP -> new McapRunSink(out, scene);
                     case CSV -> wide ? new WideCsvSink(out, runs.dataTypes(recorded)) : new LongCsvSink(out);
                 };
                 summary = new RunExport(c, line -> System.out.println(line), 2000).export(recorded, selection, sink);
@@ -150,6 +154,9 @@ public final class ExportCommand implements Callable<Integer> {
             return 0;
         } catch (SQLException e) {
             return fail(1, "database " + target + ": " + e.getMessage());
+        } catch (IllegalArgumentException e) {
+            Files.deleteIfExists(file);
+            return fail(2, e.getMessage());
         }
     }
 

@@ -27,6 +27,7 @@ public final class McapRunSink implements RunSink {
     private static final int RELATION_SLOT = 0; // ValueType codes are 1..6
 
     private final McapWriter mcap;
+    private final Map<String, String> sceneOptions;
     private final RecordBuffer body = new RecordBuffer(256);
     private final Map<Integer, int[]> channelOf = new HashMap<>();
     private final int[] schemaOf = new int[8];
@@ -38,6 +39,12 @@ public final class McapRunSink implements RunSink {
     }
 
     public McapRunSink(OutputStream out) throws IOException {
+        this(out, Map.of());
+    }
+
+    /** {@code sceneOptions}: what the {@link SceneSource}s are told ({@code course=crossing} for RoQ). */
+    public McapRunSink(OutputStream out, Map<String, String> sceneOptions) throws IOException {
+        this.sceneOptions = Map.copyOf(sceneOptions);
         this.mcap = new McapWriter(new BufferedOutputStream(out, 1 << 16), "", LIBRARY, CHUNK_BYTES);
     }
 
@@ -62,7 +69,7 @@ public final class McapRunSink implements RunSink {
         int structureSchema = mcap.schema(MessageSchemas.STRUCTURE_NAME, MessageSchemas.ENCODING, MessageSchemas.structure());
         structureChannel = mcap.channel(structureSchema, STRUCTURE_TOPIC, "json", Map.of("kind", "structure"));
         for (SceneSource source : ServiceLoader.load(SceneSource.class)) {
-            source.sceneOf(run).ifPresent(this::addScene);
+            source.sceneOf(run, sceneOptions).ifPresent(this::addScene);
         }
     }
 

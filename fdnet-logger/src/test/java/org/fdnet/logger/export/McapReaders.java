@@ -13,13 +13,13 @@ import java.util.concurrent.TimeUnit;
  * repository: Python's {@code mcap} (and pandas) in a venv, {@code @mcap/core} under node. A missing reader fails the
  * test with one line saying how to install it — never a skip.
  */
-final class McapReaders {
+public final class McapReaders {
     private final Path root;
     private final Path python;
     private final Path nodeModules;
     private final Path scripts;
 
-    McapReaders() {
+    public McapReaders() {
         Path dir = Path.of("").toAbsolutePath();
         while (dir != null && !Files.exists(dir.resolve(".ci/mcap-readers"))) {
             dir = dir.getParent();
@@ -38,21 +38,21 @@ final class McapReaders {
     }
 
     /** Python's reader on {@code mcap}: its one-line verdict. */
-    String python(Path mcap, Path expected, String... topics) throws IOException, InterruptedException {
+    public String python(Path mcap, Path expected, String... topics) throws IOException, InterruptedException {
         List<String> cmd = new ArrayList<>(List.of(python.toString(), scripts.resolve("check_mcap.py").toString(), mcap.toString()));
         addChecks(cmd, expected, topics);
         return run(cmd);
     }
 
     /** @mcap/core's indexed reader on {@code mcap}: its one-line verdict. */
-    String typescript(Path mcap, Path expected, String... topics) throws IOException, InterruptedException {
+    public String typescript(Path mcap, Path expected, String... topics) throws IOException, InterruptedException {
         List<String> cmd = new ArrayList<>(List.of("node", scripts.resolve("check_mcap.cjs").toString(), mcap.toString()));
         addChecks(cmd, expected, topics);
         return run(cmd);
     }
 
     /** pandas: {@code rows columns} of a CSV file as {@code read_csv} loads it. */
-    String pandasShape(Path csv) throws IOException, InterruptedException {
+    public String pandasShape(Path csv) throws IOException, InterruptedException {
         return run(List.of(python.toString(), "-c",
                 "import sys, pandas; d = pandas.read_csv(sys.argv[1]); print(d.shape[0], d.shape[1])", csv.toString()));
     }

@@ -134,6 +134,30 @@ public final class ViewerWindow extends JFrame {
         return replayPlot;
     }
 
+    /** The nodes Export… writes: those selected in the list, else those plotted live. */
+    List<LoggedNode> exportableNodes() {
+        List<LoggedNode> chosen = nodeList.getSelectedValuesList();
+        if (!chosen.isEmpty()) {
+            return chosen;
+        }
+        List<LoggedNode> plotted = new ArrayList<>();
+        for (int i = 0; i < nodeModel.size(); i++) {
+            if (live.tracks(nodeModel.get(i).sourceId())) {
+                plotted.add(nodeModel.get(i));
+            }
+        }
+        return plotted;
+    }
+
+    /** The plot on show (live or replay). */
+    PlotPanel shownPlot() {
+        return (PlotPanel) centre.getComponent(0);
+    }
+
+    void showStatus(String text) {
+        status.setText(text);
+    }
+
     public LoggerConnection connection() {
         return connection;
     }
@@ -211,6 +235,7 @@ public final class ViewerWindow extends JFrame {
         bar.add(lastSeconds);
         bar.add(new JLabel("  "));
         bar.add(export);
+        bar.add(new JButton(new ExportAction(this)));
         bar.add(new JLabel("   wheel: zoom · drag: pan · space: pause · double click: live"));
         return bar;
     }

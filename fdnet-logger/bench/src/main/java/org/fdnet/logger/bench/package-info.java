@@ -1,0 +1,10 @@
+/**
+ * {@code fdnet bench export}: a recorded run of a million events exported to MCAP and CSV, against the same rows
+ * copied bare out of PostgreSQL in the same run.
+ *
+ * <pre>
+ *   ExportBenchRun.fill ─COPY─▶ throwaway PostgreSQL ─┬─ COPY (SELECT …) TO STDOUT ─▶ /dev/null      (the baseline)
+ *                                                     └─ RunExport ─▶ McapRunSink / LongCsvSink ─▶ file (the export)
+ * </pre>
+ */
+package org.fdnet.logger.bench;

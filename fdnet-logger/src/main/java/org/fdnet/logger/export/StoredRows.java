@@ -54,8 +54,15 @@ public final class StoredRows {
         return sql.toString();
     }
 
+    /**
+     * Memory the server may sort in before it spills to disk: the sort by common time holds the whole selection (a
+     * million rows of vectors is ~100 MB). A session setting, so the baseline's COPY sorts alike.
+     */
+    static final String SORT_MEMORY = "SET work_mem = '256MB'";
+
     /** Reads every row of the selection in time order into {@code handler}; answers the number of rows. */
     public long read(RecordedRun run, ExportSelection selection, RowHandler handler) throws SQLException, IOException {
+        sortInMemory();
         CopyOut copy = connection.unwrap(PGConnection.class).getCopyAPI()
                 .copyOut("COPY (" + select(run, selection) + ") TO STDOUT");
         CopyTextFields fields = new CopyTextFields();
@@ -81,6 +88,12 @@ public final class StoredRows {
             }
         }
         return rows;
+    }
+
+    private void sortInMemory() throws SQLException {
+        try (java.sql.Statement s = connection.createStatement()) {
+            s.execute(SORT_MEMORY);
+        }
     }
 
     /** The bare baseline: the same SELECT copied to {@code out} as PostgreSQL's text, nothing else done. */

@@ -37,7 +37,8 @@ final class RoqScene implements RunScene {
     private double heading;
     private boolean havePosition;
     private boolean haveAngles;
-    private long lastFrame = Long.MIN_VALUE;
+    private long lastFrame;
+    private boolean anyFrame;
     private boolean courseSent;
 
     RoqScene(RoqNodes nodes, List<FragileCell> cells) {
@@ -84,7 +85,8 @@ final class RoqScene implements RunScene {
         } else {
             return;
         }
-        if (havePosition && haveAngles && nanos - lastFrame >= FRAME_NANOS) {
+        if (havePosition && haveAngles && (!anyFrame || nanos - lastFrame >= FRAME_NANOS)) {
+            anyFrame = true;
             lastFrame = nanos;
             double[] q = FoxgloveJson.rotation(attitude[0], attitude[1], heading);
             out.emit(0, nanos, FoxgloveJson.frameTransform(nanos, "world", "body", position[0], position[1], position[2], q));

@@ -29,7 +29,7 @@ import org.fdnet.viewer.source.RunInfo;
 import org.fdnet.viewer.source.ViewerExport;
 
 /**
- * The Export dialog: the chosen nodes, the time range (clock times of the day, prefilled with the visible window),
+ * The Export dialog: the chosen nodes, the time range (clock times of the day on show, prefilled with the visible window),
  * the format (MCAP, long CSV, wide CSV) and the file; Export writes it on a worker thread and says what it wrote
  * (or why not) in the dialog's status line. Component names ({@code exportFile}, {@code exportFormat},
  * {@code exportFrom}, {@code exportTo}, {@code exportRun}, {@code exportStatus}) are for tests.
@@ -55,7 +55,8 @@ final class ExportDialog extends JDialog {
         this.connection = connection;
         this.run = run;
         this.nodes = nodes;
-        this.dayStartMicros = Instant.ofEpochMilli(fromMicros / 1000).atZone(ZoneId.systemDefault()).toLocalDate()
+        long shown = toMicros > 0 ? toMicros : System.currentTimeMillis() * 1000; // an empty plot shows no day
+        this.dayStartMicros = Instant.ofEpochMilli(shown / 1000).atZone(ZoneId.systemDefault()).toLocalDate()
                 .atStartOfDay(ZoneId.systemDefault()).toInstant().toEpochMilli() * 1000;
         from.setText(clock(fromMicros));
         to.setText(clock(toMicros));

@@ -56,7 +56,6 @@ public final class ExportScenario {
             SwingUtilities.invokeAndWait(() -> {
                 JList<?> list = find(w, JList.class, c -> true);
                 list.setSelectedIndices(new int[] {indexOf(list, "pitch"), indexOf(list, "歩幅")});
-                w.shownPlot().showRange(0, Long.MAX_VALUE / 2); // the whole recording
             });
             for (ViewerExport.Format format : new ViewerExport.Format[] {ViewerExport.Format.MCAP, ViewerExport.Format.CSV}) {
                 Path file = folder.resolve("export" + format.extension());

@@ -65,6 +65,10 @@ public final class ExportCommand implements Callable<Integer> {
             + " course=crossing (the RoQ course whose fragile cells to draw: the database does not record it)")
     java.util.Map<String, String> scene = new java.util.HashMap<>();
 
+    @Option(names = "--network", paramLabel = "FILE.fdn", description = "MCAP: attach this network definition when the"
+            + " database holds none for the run (a core that named no run, e.g. fdnet demo's)")
+    Path network;
+
     @Option(names = "--db", paramLabel = "URL", description = "external database jdbc:postgresql://HOST:PORT/DB "
             + "(default: the embedded PostgreSQL in ~/.fdnet/logger-db; stop a logger using it first)")
     String db;
@@ -133,6 +137,7 @@ public final class ExportCommand implements Callable<Integer> {
             } catch (IllegalArgumentException e) {
                 return fail(2, e.getMessage());
             }
+            recorded = withDefinition(recorded);
             System.out.printf("export: run %d (%s, %d %s, %,d nodes) → %s%n", recorded.runId(), recorded.network(),
                     recorded.hosts().size(), recorded.hosts().size() == 1 ? "host" : "hosts", recorded.nodes().size(), file);
             Path parent = file.toAbsolutePath().getParent();
@@ -158,6 +163,23 @@ public final class ExportCommand implements Callable<Integer> {
             Files.deleteIfExists(file);
             return fail(2, e.getMessage());
         }
+    }
+
+    /** The run with the definition to attach: the database's, else {@code --network}'s (said either way). */
+    private RecordedRun withDefinition(RecordedRun r) throws IOException {
+        if (r.definition() != null) {
+            if (network != null) {
+                System.out.println("export: the database holds the run's own definition; attaching it, not " + network);
+            }
+            return r;
+        }
+        if (network == null) {
+            System.out.println("export: the database holds no .fdn for this run; --network FILE attaches one");
+            return r;
+        }
+        String text = Files.readString(network, java.nio.charset.StandardCharsets.UTF_8);
+        return new RecordedRun(r.runId(), r.network(), r.uuid(), r.startedMicros(), r.hosts(), text,
+                org.fdnet.event.RunIdentity.sha256Of(text), r.streams(), r.nodes());
     }
 
     private ExportSelection selection(RecordedRun recorded, StoredRuns runs) throws SQLException {

@@ -34,6 +34,8 @@ final class RoqScene implements RunScene {
     private final double[] angles = new double[RoqGeometry.JOINTS];
     private final double[] forces = new double[RoqGeometry.LEGS];
     private final double[] leg = new double[12];
+    private final double[] foot = new double[3];
+    private final double[] feetInWorld = new double[2 * RoqGeometry.LEGS];
     private double heading;
     private boolean havePosition;
     private boolean haveAngles;
@@ -132,9 +134,17 @@ final class RoqScene implements RunScene {
 
     /** Applies the break rule to the feet now; true when a cell broke. */
     private boolean pressCells(long micros) {
-        boolean changed = false;
+        if (cells.isEmpty()) {
+            return false;
+        }
         double cos = Math.cos(heading);
         double sin = Math.sin(heading);
+        for (int l = 0; l < RoqGeometry.LEGS; l++) {
+            RoqGeometry.footInBody(l, angles[3 * l], angles[3 * l + 1], angles[3 * l + 2], foot);
+            feetInWorld[2 * l] = position[0] + cos * foot[0] - sin * foot[1];
+            feetInWorld[2 * l + 1] = position[1] + sin * foot[0] + cos * foot[1];
+        }
+        boolean changed = false;
         for (int i = 0; i < cells.size(); i++) {
             if (broken[i]) {
                 continue;
@@ -142,10 +152,7 @@ final class RoqScene implements RunScene {
             FragileCell c = cells.get(i);
             boolean pressed = false;
             for (int l = 0; l < RoqGeometry.LEGS && !pressed; l++) {
-                RoqGeometry.legInBody(l, angles[3 * l], angles[3 * l + 1], angles[3 * l + 2], leg);
-                double x = position[0] + cos * leg[9] - sin * leg[10];
-                double y = position[1] + sin * leg[9] + cos * leg[10];
-                pressed = forces[l] > c.strength() && c.contains(x, y);
+                pressed = forces[l] > c.strength() && c.contains(feetInWorld[2 * l], feetInWorld[2 * l + 1]);
             }
             if (!pressed) {
                 pressedSince[i] = -1;

@@ -1,7 +1,5 @@
 package org.fdnet.roq.export;
 
-import java.util.Locale;
-
 /**
  * JSON of Foxglove's well-known message types (https://docs.foxglove.dev/docs/visualization/message-schemas), written
  * with every field a decoder may look for, and the JSON Schemas the export declares for them.
@@ -17,12 +15,17 @@ final class FoxgloveJson {
         return "{\"sec\":" + Math.floorDiv(nanos, 1_000_000_000L) + ",\"nsec\":" + Math.floorMod(nanos, 1_000_000_000L) + "}";
     }
 
+    /** A number rounded to 10 µm (or 1e-6 of a unit quaternion): short JSON, no formatter (it costs per frame). */
+    static String number(double v) {
+        return Double.toString(Math.rint(v * 1e6) / 1e6);
+    }
+
     static String vector(double x, double y, double z) {
-        return String.format(Locale.ROOT, "{\"x\":%.5f,\"y\":%.5f,\"z\":%.5f}", x, y, z);
+        return "{\"x\":" + number(x) + ",\"y\":" + number(y) + ",\"z\":" + number(z) + "}";
     }
 
     static String quaternion(double[] q) {
-        return String.format(Locale.ROOT, "{\"x\":%.6f,\"y\":%.6f,\"z\":%.6f,\"w\":%.6f}", q[0], q[1], q[2], q[3]);
+        return "{\"x\":" + number(q[0]) + ",\"y\":" + number(q[1]) + ",\"z\":" + number(q[2]) + ",\"w\":" + number(q[3]) + "}";
     }
 
     /** The rotation roll about x, then pitch about y, then yaw about z, as {x, y, z, w}. */
@@ -42,8 +45,8 @@ final class FoxgloveJson {
     }
 
     static String color(int rgb, double alpha) {
-        return String.format(Locale.ROOT, "{\"r\":%.3f,\"g\":%.3f,\"b\":%.3f,\"a\":%.2f}", ((rgb >> 16) & 0xFF) / 255.0,
-                ((rgb >> 8) & 0xFF) / 255.0, (rgb & 0xFF) / 255.0, alpha);
+        return "{\"r\":" + number(((rgb >> 16) & 0xFF) / 255.0) + ",\"g\":" + number(((rgb >> 8) & 0xFF) / 255.0)
+                + ",\"b\":" + number((rgb & 0xFF) / 255.0) + ",\"a\":" + number(alpha) + "}";
     }
 
     static String frameTransform(long nanos, String parent, String child, double x, double y, double z, double[] q) {
@@ -74,8 +77,8 @@ final class FoxgloveJson {
     /** An arrow from {@code pose} along its x axis. */
     static String arrow(String pose, double length, String color) {
         double head = Math.min(0.04, length / 3);
-        return String.format(Locale.ROOT, "{\"pose\":%s,\"shaft_length\":%.4f,\"shaft_diameter\":0.012,"
-                + "\"head_length\":%.4f,\"head_diameter\":0.03,\"color\":%s}", pose, Math.max(0, length - head), head, color);
+        return "{\"pose\":" + pose + ",\"shaft_length\":" + number(Math.max(0, length - head))
+                + ",\"shaft_diameter\":0.012,\"head_length\":" + number(head) + ",\"head_diameter\":0.03,\"color\":" + color + "}";
     }
 
     /** A line strip (type 0) through {@code points} ({x, y, z} in turn). */
@@ -84,8 +87,8 @@ final class FoxgloveJson {
         for (int i = 0; i < points.length; i += 3) {
             p.append(i > 0 ? "," : "").append(vector(points[i], points[i + 1], points[i + 2]));
         }
-        return String.format(Locale.ROOT, "{\"type\":0,\"pose\":%s,\"thickness\":%.3f,\"scale_invariant\":false,"
-                + "\"points\":[%s],\"color\":%s,\"colors\":[],\"indices\":[]}", pose(0, 0, 0, IDENTITY), thickness, p, color);
+        return "{\"type\":0,\"pose\":" + pose(0, 0, 0, IDENTITY) + ",\"thickness\":" + number(thickness)
+                + ",\"scale_invariant\":false,\"points\":[" + p + "],\"color\":" + color + ",\"colors\":[],\"indices\":[]}";
     }
 
     static final double[] IDENTITY = {0, 0, 0, 1};

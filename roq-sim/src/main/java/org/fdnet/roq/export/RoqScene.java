@@ -12,7 +12,7 @@ import org.fdnet.roq.sim.RoqGeometry;
  * by forward kinematics of the recorded joint angles ({@link RoqGeometry#legInBody}), the feet (green when their
  * sole bears load), each sole's force as an upward arrow, and the course's fragile cells — a cell is drawn broken
  * from the moment a recorded foot on it pressed beyond its strength for {@link FragileCell#BREAK_HOLD_SECONDS}
- * (the simulator's rule, applied to the recorded feet; the heading is the network's own estimate, so near a cell's
+ * (the simulator's rule, applied to the recorded feet every 10 ms; the heading is the network's own estimate, so near a cell's
  * edge the verdict may differ from the simulator's). The robot is drawn at most {@value #FRAMES_PER_SECOND} times a
  * second of recorded time.
  */
@@ -23,6 +23,8 @@ final class RoqScene implements RunScene {
     /** Arrow length per newton of sole force, m/N (the robot's weight on one foot ≈ 0.4 m). */
     static final double ARROW_METRES_PER_NEWTON = 1.0 / 450;
     private static final long FRAME_NANOS = 1_000_000_000L / FRAMES_PER_SECOND;
+    /** The break rule is checked every 10 ms of recorded time: ten times within a cell's hold of 0.1 s. */
+    private static final long CHECK_NANOS = 10_000_000L;
     private static final double[] ARROW_UP = {0, -Math.sqrt(0.5), 0, Math.sqrt(0.5)}; // x axis turned onto z
 
     private final RoqNodes nodes;
@@ -36,9 +38,15 @@ final class RoqScene implements RunScene {
     private final double[] leg = new double[12];
     private final double[] foot = new double[3];
     private final double[] feetInWorld = new double[2 * RoqGeometry.LEGS];
+    private final double[] headingValue = new double[1];
     private double heading;
-    private boolean havePosition;
-    private boolean haveAngles;
+    private String positionText;
+    private String attitudeText;
+    private String anglesText;
+    private String forcesText;
+    private String headingText;
+    private long lastCheck;
+    private boolean anyCheck;
     private long lastFrame;
     private boolean anyFrame;
     private boolean courseSent;
@@ -69,31 +77,54 @@ final class RoqScene implements RunScene {
             courseSent = true;
             out.emit(2, nanos, course(nanos));
         }
+        // the texts are kept and parsed only when drawn or checked: most rows are never looked at again
         if (id == nodes.position()) {
-            havePosition = read(row.value(), position);
+            positionText = row.value();
         } else if (id == nodes.attitude()) {
-            read(row.value(), attitude);
+            attitudeText = row.value();
         } else if (id == nodes.heading()) {
-            double[] h = new double[1];
-            if (read(row.value(), h)) {
-                heading = h[0];
-            }
+            headingText = row.value();
         } else if (id == nodes.angles()) {
-            haveAngles = read(row.value(), angles);
+            anglesText = row.value();
         } else if (id == nodes.forces()) {
-            if (read(row.value(), forces) && havePosition && haveAngles && pressCells(row.time())) {
-                out.emit(2, nanos, course(nanos));
-            }
+            forcesText = row.value();
         } else {
             return;
         }
-        if (havePosition && haveAngles && (!anyFrame || nanos - lastFrame >= FRAME_NANOS)) {
+        if (positionText == null || anglesText == null) {
+            return;
+        }
+        if (!cells.isEmpty() && forcesText != null && (!anyCheck || nanos - lastCheck >= CHECK_NANOS)) {
+            anyCheck = true;
+            lastCheck = nanos;
+            if (parse() && pressCells(row.time())) {
+                out.emit(2, nanos, course(nanos));
+            }
+        }
+        if (!anyFrame || nanos - lastFrame >= FRAME_NANOS) {
             anyFrame = true;
             lastFrame = nanos;
-            double[] q = FoxgloveJson.rotation(attitude[0], attitude[1], heading);
-            out.emit(0, nanos, FoxgloveJson.frameTransform(nanos, "world", "body", position[0], position[1], position[2], q));
-            out.emit(1, nanos, robot(nanos));
+            if (parse()) {
+                double[] q = FoxgloveJson.rotation(attitude[0], attitude[1], heading);
+                out.emit(0, nanos, FoxgloveJson.frameTransform(nanos, "world", "body", position[0], position[1], position[2], q));
+                out.emit(1, nanos, robot(nanos));
+            }
         }
+    }
+
+    /** Parses the latest texts; false when position or angles are not (yet) numbers of their length. */
+    private boolean parse() {
+        boolean ok = read(positionText, position) && read(anglesText, angles);
+        if (attitudeText != null) {
+            read(attitudeText, attitude);
+        }
+        if (forcesText != null) {
+            read(forcesText, forces);
+        }
+        if (headingText != null && read(headingText, headingValue)) {
+            heading = headingValue[0];
+        }
+        return ok;
     }
 
     private String robot(long nanos) {

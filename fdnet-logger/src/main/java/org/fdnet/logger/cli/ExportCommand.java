@@ -12,7 +12,6 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.fdnet.logger.config.LoggerConfig;
 import org.fdnet.logger.config.LoggerConfigFile;
-import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.logger.export.ExportSelection;
 import org.fdnet.logger.export.ExportSummary;
 import org.fdnet.logger.export.LongCsvSink;
@@ -69,12 +68,8 @@ public final class ExportCommand implements Callable<Integer> {
             + " database holds none for the run (a core that named no run, e.g. fdnet demo's)")
     Path network;
 
-    @Option(names = "--db", paramLabel = "URL", description = "external database jdbc:postgresql://HOST:PORT/DB "
-            + "(default: the embedded PostgreSQL in ~/.fdnet/logger-db; stop a logger using it first)")
-    String db;
-
-    @Option(names = "--db-user", paramLabel = "USER", description = "user for --db (default postgres)")
-    String dbUser;
+    @picocli.CommandLine.Mixin
+    DatabaseOptions database;
 
     @Option(names = "--config", paramLabel = "FILE", description = "logger configuration file (default ~/.fdnet/logger.properties)")
     Path configFile;
@@ -94,12 +89,7 @@ public final class ExportCommand implements Callable<Integer> {
                 throw new IllegalArgumentException("--wide is for a .csv file, not " + file);
             }
             config = LoggerConfigFile.load(configFile != null ? configFile : LoggerConfigFile.defaultPath());
-            if (db != null) {
-                config.set(LoggerSetting.DATABASE_URL, db).set(LoggerSetting.DATABASE_EMBEDDED, "false");
-            }
-            if (dbUser != null) {
-                config.set(LoggerSetting.DATABASE_USER, dbUser);
-            }
+            database.applyTo(config);
             config.validate();
         } catch (IllegalArgumentException | IllegalStateException e) {
             return fail(2, e.getMessage());
@@ -112,7 +102,7 @@ public final class ExportCommand implements Callable<Integer> {
                     embedded = EmbeddedDatabase.start(config.embeddedDirectory(), 0, true);
                 } catch (IOException | RuntimeException e) {
                     return fail(1, "cannot open the embedded database in " + config.embeddedDirectory()
-                            + " (is a logger using it? stop it, or pass --db URL of its server): " + rootMessage(e));
+                            + " (is a logger using it? stop it first, or pass --db URL of an external server): " + rootMessage(e));
                 }
                 target = embedded.target();
             } else {

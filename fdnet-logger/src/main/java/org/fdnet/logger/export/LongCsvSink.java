@@ -1,27 +1,20 @@
 package org.fdnet.logger.export;
 
-import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.OutputStream;
-import java.io.OutputStreamWriter;
-import java.nio.charset.StandardCharsets;
 
 /**
  * A run as a long table, one line per value of a Data or a Relation: {@code time_us,host,module,node,value} (time
  * in µs since the epoch on the run's common clock; the value as the database stores it — a vector's elements
  * comma-separated inside quotes). Structure changes are not values and are left out.
  */
-public final class LongCsvSink implements RunSink {
+public final class LongCsvSink extends CsvSink {
     public static final String HEADER = "time_us,host,module,node,value";
-    private final CountingOutput counted;
-    private final BufferedWriter out;
     private RecordedRun run;
-    private long lines;
     private final java.util.Map<Integer, String> prefixOf = new java.util.HashMap<>();
 
     public LongCsvSink(OutputStream stream) {
-        this.counted = new CountingOutput(stream);
-        this.out = new BufferedWriter(new OutputStreamWriter(counted, StandardCharsets.UTF_8), 1 << 16);
+        super(stream);
     }
 
     @Override
@@ -47,22 +40,7 @@ public final class LongCsvSink implements RunSink {
     }
 
     @Override
-    public long written() {
-        return lines;
-    }
-
-    @Override
     public int channels() {
         return prefixOf.size();
-    }
-
-    @Override
-    public long bytes() {
-        return counted.count();
-    }
-
-    @Override
-    public void close() throws IOException {
-        out.close();
     }
 }

@@ -1,10 +1,7 @@
 package org.fdnet.logger.export;
 
-import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.OutputStream;
-import java.io.OutputStreamWriter;
-import java.nio.charset.StandardCharsets;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -19,20 +16,16 @@ import org.fdnet.event.ValueType;
  * before its first). Columns are named {@code MODULE/NODE}, with {@code HOST:} before it where two hosts share the
  * name. Vectors, strings, bytes, Relations and structure changes are left to the long table and MCAP.
  */
-public final class WideCsvSink implements RunSink {
-    private final CountingOutput counted;
-    private final BufferedWriter out;
+public final class WideCsvSink extends CsvSink {
     private final Map<Integer, ValueType> columnTypes;
     private final Map<Integer, Integer> columnOf = new HashMap<>();
     private String[] current;
     private long time = Long.MIN_VALUE;
     private boolean pending;
-    private long lines;
 
     /** {@code columnTypes}: the value type of each Data by source id (scalar ones become columns, in this order). */
     public WideCsvSink(OutputStream stream, Map<Integer, ValueType> columnTypes) {
-        this.counted = new CountingOutput(stream);
-        this.out = new BufferedWriter(new OutputStreamWriter(counted, StandardCharsets.UTF_8), 1 << 16);
+        super(stream);
         this.columnTypes = columnTypes;
     }
 
@@ -110,18 +103,8 @@ public final class WideCsvSink implements RunSink {
     }
 
     @Override
-    public long written() {
-        return lines;
-    }
-
-    @Override
     public int channels() {
         return current == null ? 0 : current.length;
-    }
-
-    @Override
-    public long bytes() {
-        return counted.count();
     }
 
     @Override
@@ -132,7 +115,7 @@ public final class WideCsvSink implements RunSink {
                 pending = false;
             }
         } finally {
-            out.close();
+            super.close();
         }
     }
 }

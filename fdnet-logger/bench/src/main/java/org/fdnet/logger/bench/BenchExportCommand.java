@@ -24,7 +24,8 @@ import picocli.CommandLine.Option;
 /**
  * {@code fdnet bench export}: the export's speed against its baseline in the same run — a bare
  * {@code COPY (SELECT …) TO STDOUT} of the very SELECT the export streams (same rows, same join, same sort),
- * read to the end and thrown away. Rounds alternate baseline and export; the medians give the ratio.
+ * read to the end and thrown away, on a throwaway embedded PostgreSQL. Rounds alternate baseline and export; the
+ * medians give the ratio.
  */
 @Command(name = "export", mixinStandardHelpOptions = true,
         description = {"Export a recorded run of --events rows to MCAP (and CSV) against a bare COPY (SELECT ...) TO STDOUT",
@@ -39,29 +40,12 @@ public final class BenchExportCommand implements Callable<Integer> {
     @Option(names = "--rounds", defaultValue = "3", description = "baseline/export rounds (default ${DEFAULT-VALUE})")
     int rounds;
 
-    @Option(names = "--db", paramLabel = "URL", description = "an external database to fill (default: a throwaway embedded one)")
-    String db;
-
-    @Option(names = "--db-user", defaultValue = "postgres", description = "user for --db")
-    String dbUser;
-
     @Override
     public Integer call() throws Exception {
         Path work = Files.createTempDirectory("fdnet-bench-export");
-        EmbeddedDatabase embedded = null;
-        try {
-            DatabaseTarget target;
-            if (db == null) {
-                embedded = EmbeddedDatabase.startThrowaway(work.resolve("pg"));
-                target = embedded.target();
-            } else {
-                target = new DatabaseTarget(db, dbUser, "");
-            }
-            return run(target, work);
+        try (EmbeddedDatabase embedded = EmbeddedDatabase.startThrowaway(work.resolve("pg"))) {
+            return run(embedded.target(), work);
         } finally {
-            if (embedded != null) {
-                embedded.close();
-            }
             try (var files = Files.walk(work)) {
                 files.sorted(java.util.Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
             }

@@ -1,5 +1,6 @@
 package org.fdnet.cli;
 
+import org.fdnet.cli.spi.CommandProvider;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;

@@ -1,5 +1,6 @@
 package org.fdnet.cli;
 
+import org.fdnet.cli.spi.CommandProvider;
 import java.util.ServiceLoader;
 import org.fdnet.logging.QuietTerminalLogging;
 import picocli.CommandLine;

@@ -1,6 +1,6 @@
 /**
  * The {@code fdnet} command line (picocli), the entry point of {@code bin/fdnet}. The plug-in point,
- * {@link org.fdnet.cli.CommandProvider}, is in fdnet-api (same package), so the logger and the viewer add their
+ * {@link org.fdnet.cli.spi.CommandProvider}, is in fdnet-api (package org.fdnet.cli.spi), so the logger and the viewer add their
  * commands without depending on the engine.
  *
  * <pre>

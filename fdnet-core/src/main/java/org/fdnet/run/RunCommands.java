@@ -1,7 +1,7 @@
 package org.fdnet.run;
 
 import java.util.List;
-import org.fdnet.cli.CommandProvider;
+import org.fdnet.cli.spi.CommandProvider;
 
 /** Adds {@code fdnet run} to the command line. */
 public final class RunCommands implements CommandProvider {

@@ -1,9 +1,9 @@
 package org.fdnet.bench;
 
 import java.util.List;
-import org.fdnet.cli.CommandProvider;
+import org.fdnet.cli.spi.CommandProvider;
 import org.fdnet.corba.bench.CorbaBenchmark;
-import org.fdnet.runtime.cli.BenchCoreCommand;
+import org.fdnet.runtime.bench.BenchCoreCommand;
 
 /**
  * Adds the core's benchmarks to {@code fdnet bench}: {@code load} (network files and queries), {@code core} (the

@@ -1,5 +1,6 @@
 package org.fdnet.architecture;
 
+import static com.tngtech.archunit.base.DescribedPredicate.not;
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
 import static com.tngtech.archunit.library.Architectures.layeredArchitecture;
 import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
@@ -11,6 +12,7 @@ import static org.fdnet.architecture.FdnetModules.inModulePackages;
 import com.tngtech.archunit.core.domain.JavaClasses;
 import com.tngtech.archunit.core.importer.ClassFileImporter;
 import com.tngtech.archunit.lang.ArchRule;
+import java.util.List;
 import java.util.Set;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.BeforeAll;
@@ -34,8 +36,20 @@ class ArchitectureTest {
     void shouldSeeTheMainCodeOfEveryModule() {
         Set<String> modules = classes.stream().map(FdnetModules::moduleOf).collect(Collectors.toSet());
         assertThat(modules).contains("fdnet-core/api", CORE, "fdnet-logger", "fdnet-viewer", "fdnet-hi", "roq-sim",
-                "fdnet-core/bench", "fdnet-logger/bench", "fdnet-viewer/bench", "fdnet-hi/bench", "roq-sim/bench");
+                "fdnet-core/bench", "fdnet-logger/bench", "fdnet-viewer/bench", "fdnet-hi/bench", "roq-sim/bench",
+                "fdnet-core/testkit", "roq-sim/testkit");
         assertThat(modules).doesNotContain("");
+    }
+
+    @Test
+    void shouldKeepEveryPackageInTheOneModuleThatOwnsIt() {
+        List<String> misplaced = classes.stream()
+                .filter(type -> FdnetModules.builtBy(type).filter(folder -> !folder.equals(FdnetModules.moduleOf(type)))
+                        .isPresent())
+                .map(type -> type.getName() + " is built by " + FdnetModules.builtBy(type).orElseThrow()
+                        + " but its package belongs to " + FdnetModules.moduleOf(type))
+                .distinct().sorted().toList();
+        assertThat(misplaced).as("classes outside the module that owns their package (a split package)").isEmpty();
     }
 
     @Test
@@ -59,7 +73,7 @@ class ArchitectureTest {
 
     @Test
     void shouldUseHdrHistogramInBenchModulesOnly() {
-        noClasses().that(com.tngtech.archunit.base.DescribedPredicate.not(inABenchModule()))
+        noClasses().that(not(inABenchModule()))
                 .should().dependOnClassesThat().resideInAPackage("org.HdrHistogram..")
                 .check(classes);
     }
@@ -67,9 +81,10 @@ class ArchitectureTest {
     /** The layering of docs/architecture.md, bottom first. A layer may use the ones its line names. */
     static ArchRule layers() {
         return layeredArchitecture().consideringOnlyDependenciesInLayers()
-                .layer("Api").definedBy(inModule("fdnet-core/api"))
+                .layer("Api").definedBy(inModule("fdnet-core/api").and(not(inModulePackages("fdnet-core/api",
+                        "org.fdnet.runtime"))))
                 .layer("Files").definedBy(inModulePackages(CORE, "org.fdnet.netinfo.xml..", "org.fdnet.logging"))
-                .layer("Runtime API").definedBy(inModulePackages(CORE, "org.fdnet.runtime"))
+                .layer("Runtime API").definedBy(inModulePackages("fdnet-core/api", "org.fdnet.runtime"))
                 .layer("Nodes").definedBy(inModulePackages(CORE, "org.fdnet.runtime.library"))
                 .layer("Engine").definedBy(inModulePackages(CORE, "org.fdnet.runtime.engine",
                         "org.fdnet.runtime.loading"))
@@ -82,6 +97,8 @@ class ArchitectureTest {
                 .layer("Viewer").definedBy(inModule("fdnet-viewer"))
                 .layer("Editor").definedBy(inModule("fdnet-hi"))
                 .layer("Simulator").definedBy(inModule("roq-sim"))
+                .layer("Test kit").definedBy(inModule("fdnet-core/testkit"))
+                .layer("Robot test kit").definedBy(inModule("roq-sim/testkit"))
                 .layer("Bench").definedBy(inABenchModule())
 
                 .whereLayer("Api").mayNotAccessAnyLayer()
@@ -100,6 +117,11 @@ class ArchitectureTest {
                         "Distribution", "Commands", "Viewer")
                 .whereLayer("Simulator").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine",
                         "Control", "Distribution", "Commands", "Logger", "Viewer")
+                .whereLayer("Test kit").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine")
+                .whereLayer("Robot test kit").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine",
+                        "Logger", "Simulator", "Test kit")
+                .whereLayer("Test kit").mayOnlyBeAccessedByLayers("Robot test kit")
+                .whereLayer("Robot test kit").mayNotBeAccessedByAnyLayer()
                 .whereLayer("Bench").mayNotBeAccessedByAnyLayer();
     }
 }

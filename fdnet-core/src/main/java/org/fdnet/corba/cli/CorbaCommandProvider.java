@@ -1,7 +1,7 @@
 package org.fdnet.corba.cli;
 
 import java.util.List;
-import org.fdnet.cli.CommandProvider;
+import org.fdnet.cli.spi.CommandProvider;
 
 /** Adds {@code naming}, {@code host} and {@code control} to {@code fdnet} ({@code bench corba} is fdnet-core/bench's). */
 public final class CorbaCommandProvider implements CommandProvider {

@@ -1,7 +1,7 @@
 package org.fdnet.hi.cli;
 
 import java.util.List;
-import org.fdnet.cli.CommandProvider;
+import org.fdnet.cli.spi.CommandProvider;
 
 /** Adds {@code fdnet hi} ({@code bench hi} is fdnet-hi/bench's). */
 public final class HiCommandProvider implements CommandProvider {

@@ -1,7 +1,7 @@
 package org.fdnet.viewer.cli;
 
 import java.util.List;
-import org.fdnet.cli.CommandProvider;
+import org.fdnet.cli.spi.CommandProvider;
 
 /** Adds {@code fdnet viewer} ({@code bench viewer} is fdnet-viewer/bench's). */
 public final class ViewerCommandProvider implements CommandProvider {

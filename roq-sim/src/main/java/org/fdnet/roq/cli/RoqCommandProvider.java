@@ -1,7 +1,7 @@
 package org.fdnet.roq.cli;
 
 import java.util.List;
-import org.fdnet.cli.CommandProvider;
+import org.fdnet.cli.spi.CommandProvider;
 
 /** Adds {@code fdnet sim} and {@code fdnet demo} (the benchmarks are roq-sim/bench's). */
 public final class RoqCommandProvider implements CommandProvider {

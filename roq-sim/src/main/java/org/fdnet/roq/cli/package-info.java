@@ -2,7 +2,7 @@
  * roq-sim's commands under {@code fdnet}: {@code sim} (run a course, print progress and a summary, optionally
  * a screenshot) and {@code demo} (RoQ walking under a network on the real-time simulator, recorded by an
  * {@code InProcessLogger} of the user's database). Registered through
- * {@link org.fdnet.roq.cli.RoqCommandProvider} in {@code META-INF/services/org.fdnet.cli.CommandProvider}.
+ * {@link org.fdnet.roq.cli.RoqCommandProvider} in {@code META-INF/services/org.fdnet.cli.spi.CommandProvider}.
  *
  * <p>The benchmarks of the same package live in roq-sim/bench, registered there by {@code RoqBenchmarks}:
  * {@code bench rt} (the joint loop's wake-up latency beside cyclictest), {@code bench sim} (the stepped tick beside

@@ -1,7 +1,7 @@
 package org.fdnet.logger.bench;
 
 import java.util.List;
-import org.fdnet.cli.CommandProvider;
+import org.fdnet.cli.spi.CommandProvider;
 
 /** Adds {@code fdnet bench export}. */
 public final class ExportBenchmarks implements CommandProvider {

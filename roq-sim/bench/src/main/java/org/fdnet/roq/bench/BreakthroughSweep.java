@@ -1,0 +1,129 @@
+package org.fdnet.roq.bench;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.stream.Stream;
+import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.roq.bridge.BreakthroughCauses;
+import org.fdnet.roq.bridge.CourseRun;
+import org.fdnet.roq.sim.Course;
+
+/**
+ * {@code fdnet bench roq --part breakthroughs}: a course walked on many sensor-noise seeds, stepped, and how many
+ * fragile cells broke under a loaded foot ({@link CourseRun#loadedBreakthroughs()}) against under a probe, how far
+ * RoQ walked, how far it strayed and whether it fell. One run says little — on {@code crossing} the count moves by
+ * 0–3 from one noise seed to the next — so it is the sum over the seeds that compares. Baseline, over the same seeds:
+ * the network with module Probing unloaded (every crust stepped on then breaks under a loaded foot). At most two runs
+ * at a time; a line per run as it ends.
+ */
+final class BreakthroughSweep {
+    private final NetworkInfo network;
+    private final Course course;
+    private final long[] noises;
+    private final int seconds;
+    /** Modules unloaded in every run (the baseline unloads Probing as well). */
+    private final String[] unloaded;
+    /** The baseline's sum, once {@link #run()} has run. */
+    private Sum baseline;
+
+    BreakthroughSweep(NetworkInfo network, Course course, long[] noises, int seconds, String... unloaded) {
+        this.network = network;
+        this.course = course;
+        this.noises = noises.clone();
+        this.seconds = seconds;
+        this.unloaded = unloaded.clone();
+    }
+
+    /** Sums of one variant's runs. */
+    record Sum(int runs, int loaded, int probeBroken, int withNone, int fallen, double walked, double leastWalked,
+               double track, double heading, int swinging, int standing, int slid) {
+        static Sum of(List<CourseRun> runs) {
+            int swinging = 0;
+            int standing = 0;
+            int slid = 0;
+            int loaded = 0;
+            int probe = 0;
+            int none = 0;
+            int fallen = 0;
+            double walked = 0;
+            double least = Double.POSITIVE_INFINITY;
+            double track = 0;
+            double heading = 0;
+            for (CourseRun r : runs) {
+                loaded += r.loadedBreakthroughs();
+                swinging += r.underSwingingFoot();
+                standing += r.underStandingFoot();
+                slid += r.slidSinceSetDown();
+                probe += r.probeBroken();
+                none += r.loadedBreakthroughs() == 0 ? 1 : 0;
+                fallen += r.fallen() ? 1 : 0;
+                walked += r.distance();
+                least = Math.min(least, r.distance());
+                track = Math.max(track, r.trackError());
+                heading = Math.max(heading, r.headingError());
+            }
+            return new Sum(runs.size(), loaded, probe, none, fallen, walked / runs.size(), least, track, heading,
+                    swinging, standing, slid);
+        }
+
+        String line(String label) {
+            return String.format(Locale.ROOT, "%s: %d loaded-foot breakthroughs over %d runs (%d runs with none; under a"
+                            + " swinging foot %d, under a standing foot %d, of which slid %.0f cm or more since set down"
+                            + " %d), %d cells broken by probes, %d fallen; walked %.3f m on average (least %.3f); off the"
+                            + " line at most %.3f m, off the heading at most %.3f rad", label, loaded, runs, withNone,
+                    swinging, standing, BreakthroughCauses.SLID * 100, slid, probeBroken, fallen, walked, leastWalked,
+                    track, heading);
+        }
+    }
+
+    /** Runs both variants on every seed, prints each run and the two sums; returns the network's. */
+    Sum run() throws Exception {
+        System.out.printf(Locale.ROOT, "fdnet bench roq --part breakthroughs: %s%s on %s, %d simulated s per run, %d"
+                        + " noise seeds, stepped, two at a time; baseline: module Probing unloaded%n", network.name(),
+                unloaded.length == 0 ? "" : " with " + String.join(", ", unloaded) + " unloaded", course.name(), seconds,
+                noises.length);
+        String[] withoutProbing = Stream.concat(Arrays.stream(unloaded), Stream.of("Probing")).distinct()
+                .toArray(String[]::new);
+        ExecutorService pool = Executors.newFixedThreadPool(2);
+        List<Future<CourseRun>> probed = new ArrayList<>();
+        List<Future<CourseRun>> unprobed = new ArrayList<>();
+        try {
+            for (long noise : noises) {
+                probed.add(pool.submit(() -> CourseRun.of("noise " + noise, network, course, seconds, noise, unloaded)));
+            }
+            for (long noise : noises) {
+                unprobed.add(pool.submit(() -> CourseRun.of("noise " + noise + ", Probing unloaded", network, course,
+                        seconds, noise, withoutProbing)));
+            }
+            List<CourseRun> with = collect(probed);
+            List<CourseRun> without = collect(unprobed);
+            Sum sum = Sum.of(with);
+            System.out.println(sum.line("with the network as it is"));
+            baseline = Sum.of(without);
+            System.out.println(baseline.line("baseline, module Probing unloaded"));
+            return sum;
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    /** The baseline's sum (module Probing unloaded) of the last {@link #run()}; null before. */
+    Sum baseline() {
+        return baseline;
+    }
+
+    private static List<CourseRun> collect(List<Future<CourseRun>> futures) throws Exception {
+        List<CourseRun> runs = new ArrayList<>();
+        for (Future<CourseRun> f : futures) {
+            CourseRun r = f.get();
+            System.out.println("  " + r);
+            runs.add(r);
+        }
+        return runs;
+    }
+}

@@ -128,7 +128,7 @@ public final class ExportCommand implements Callable<Integer> {
                 return fail(2, e.getMessage());
             }
             recorded = withDefinition(recorded);
-            System.out.printf("export: run %d (%s, %d %s, %,d nodes) → %s%n", recorded.runId(), recorded.network(),
+            out().printf("export: run %d (%s, %d %s, %,d nodes) → %s%n", recorded.runId(), recorded.network(),
                     recorded.hosts().size(), recorded.hosts().size() == 1 ? "host" : "hosts", recorded.nodes().size(), file);
             Path parent = file.toAbsolutePath().getParent();
             if (parent != null) {
@@ -140,9 +140,9 @@ public final class ExportCommand implements Callable<Integer> {
                     case MCAP -> new McapRunSink(out, scene);
                     case CSV -> wide ? new WideCsvSink(out, runs.dataTypes(recorded)) : new LongCsvSink(out);
                 };
-                summary = new RunExport(c, line -> System.out.println(line), 2000).export(recorded, selection, sink);
+                summary = new RunExport(c, line -> { out().println(line); out().flush(); }, 2000).export(recorded, selection, sink);
             }
-            System.out.printf("export: wrote %s: %,d %s, %,d %s, %,d bytes in %.2f s (%,d rows read, %,.0f rows/s)%n",
+            out().printf("export: wrote %s: %,d %s, %,d %s, %,d bytes in %.2f s (%,d rows read, %,.0f rows/s)%n",
                     file, summary.records(), format == Format.MCAP ? "messages" : "lines", summary.channels(),
                     format == Format.MCAP ? "channels" : "value columns", summary.bytes(), summary.seconds(),
                     summary.rows(), summary.rowsPerSecond());
@@ -159,12 +159,12 @@ public final class ExportCommand implements Callable<Integer> {
     private RecordedRun withDefinition(RecordedRun r) throws IOException {
         if (r.definition() != null) {
             if (network != null) {
-                System.out.println("export: the database holds the run's own definition; attaching it, not " + network);
+                out().println("export: the database holds the run's own definition; attaching it, not " + network);
             }
             return r;
         }
         if (network == null) {
-            System.out.println("export: the database holds no .fdn for this run; --network FILE attaches one");
+            out().println("export: the database holds no .fdn for this run; --network FILE attaches one");
             return r;
         }
         String text = Files.readString(network, java.nio.charset.StandardCharsets.UTF_8);
@@ -218,6 +218,10 @@ public final class ExportCommand implements Callable<Integer> {
             return Format.CSV;
         }
         throw new IllegalArgumentException("--to " + file + ": name a .mcap or a .csv file");
+    }
+
+    private java.io.PrintWriter out() {
+        return spec.commandLine().getOut();
     }
 
     private int fail(int code, String message) {

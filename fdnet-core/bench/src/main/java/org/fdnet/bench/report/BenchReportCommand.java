@@ -31,7 +31,7 @@ import picocli.CommandLine.Spec;
                         + "machine: other work on the cores moves every figure."})
 public final class BenchReportCommand implements Callable<Integer> {
     @Option(names = "--only", split = ",", paramLabel = "BENCHMARK",
-            description = "run only these (load, core, corba, logger, viewer, hi, rt, sim, roq-ab, roq-push, "
+            description = "run only these (load, core, corba, logger, export, viewer, hi, rt, sim, roq-ab, roq-push, "
                     + "roq-heading, roq-breakthroughs); the table keeps the other rows")
     List<String> only;
 

@@ -65,6 +65,7 @@ class ReportPlanTest {
         assertThat(read("logger", "logger: query in-process")).containsExactly(0.03, 0.05);
         assertThat(read("logger", "logger: viewer query over TCP, writer idle")).containsExactly(0.68, 0.05);
         assertThat(read("logger", "logger: events lost in the burst")[0]).isZero();
+        assertThat(read("export", "export: a 1,000,000-row run")).containsExactly(195_724, 318_843);
         assertThat(read("viewer", "viewer: 50 series")).containsExactly(30.0, 191.4);
         assertThat(read("viewer", "viewer: write")).containsExactly(43.9, 7.7);
         assertThat(read("hi", "hi: open + lay out 1,000 nodes, first")).containsExactly(1700.4, 297.4);

@@ -11,26 +11,40 @@ import org.fdnet.event.ValueType;
  * Methods are called by the engine only; a Data never holds a lock of its own and never blocks.
  */
 public abstract class Data {
+    /** The first value, before anyone writes: read by {@link #initialValue} for every Data. */
+    public static final ParameterSpec<String> INITIAL = ParameterSpec.text("initial").defaultDescribed("the type's zero")
+            .describe("the first value, before anyone writes, in the Data's type");
+
     private volatile DataPort port;
 
-    /** The type of every value this Data holds. */
+    /**
+     * The type of every value this Data holds.
+     *
+     * @return the type
+     */
     public abstract ValueType type();
 
-    /** Reads parameters; throw {@link ParameterException} (via {@link NodeParameters}) on a bad one. */
+    /**
+     * Reads parameters, each with its declaration ({@link ParameterSpec#read}); the engine has already checked
+     * every declared one. Throw {@link ParameterException} ({@link NodeParameters#conflict}) when two disagree.
+     *
+     * @param parameters the node's parameters
+     * @throws Exception when the node cannot start; the message is shown with the node's name
+     */
     protected void init(NodeParameters parameters) throws Exception {
     }
 
     /** The value before anyone writes: parameter {@code initial} when given, else the type's zero. */
     protected Value initialValue(NodeParameters parameters) {
-        String initial = parameters.text("initial");
+        String initial = INITIAL.read(parameters);
         if (initial == null) {
             return Value.zero(type());
         }
         try {
             return Value.parse(type(), initial);
         } catch (IllegalArgumentException e) {
-            throw new ParameterException(parameters.node() + ": parameter 'initial' = '" + initial + "' is not a "
-                    + type().name().toLowerCase() + " value", e);
+            throw new ParameterException(parameters.node().spelledOut() + ": parameter 'initial' must be a "
+                    + type().name().toLowerCase(java.util.Locale.ROOT) + " value, was '" + initial.strip() + "'", e);
         }
     }
 

@@ -9,7 +9,9 @@ import org.fdnet.netinfo.ParameterType;
 /**
  * A node's parameters as its class reads them. A parameter the file types ({@code type="double"}) was
  * checked when the network was loaded; an untyped one is a string that this class converts on request.
- * Every failure is a {@link ParameterException} naming the node, the parameter and the bad value.
+ * Every failure is a {@link ParameterException} naming the node, the parameter and the bad value. A node class
+ * declares its parameters as {@link ParameterSpec}s and reads them with {@link ParameterSpec#read}; the typed
+ * getters here serve classes that declare nothing.
  */
 public final class NodeParameters {
     private final NodeRef node;
@@ -97,18 +99,39 @@ public final class NodeParameters {
         try {
             return type.parse(p.value());
         } catch (IllegalArgumentException e) {
-            throw new ParameterException(node + ": parameter '" + name + "' must be " + expected + ", but is '"
-                    + p.value() + "'", e);
+            throw new ParameterException(node.spelledOut() + ": parameter '" + name + "' must be " + expected
+                    + ", was '" + p.value() + "'", e);
         }
     }
 
-    /** A failure of this node's parameters that the node's class found (e.g. two parameters that disagree). */
-    public ParameterException invalid(String name, String why) {
-        return new ParameterException(node + ": parameter '" + name + "' " + why);
+    /**
+     * A refusal of two parameters that do not fit together, each fine on its own (a lower bound above an upper
+     * one, two lists of different lengths, one of two alternatives required): the message names module, node, both
+     * parameters with their values, and the rule.
+     *
+     * @param first  one parameter of the rule
+     * @param second the other
+     * @param rule   what must hold between them, e.g. {@code "low must not be above high"}
+     * @return the exception to throw from {@code init}
+     */
+    public ParameterException conflict(ParameterSpec<?> first, ParameterSpec<?> second, String rule) {
+        return new ParameterException(node.spelledOut() + ": parameters " + given(first) + " and " + given(second)
+                + " do not fit together: " + rule);
+    }
+
+    private String given(ParameterSpec<?> spec) {
+        String t = text(spec.name());
+        return "'" + spec.name() + "' (" + (t != null ? t.strip() : spec.defaultText() != null
+                ? "default " + spec.defaultText() : "not given") + ")";
+    }
+
+    /** A refusal of one parameter, worded {@code module 'M', node 'N': parameter 'P' WHY}. */
+    ParameterException problem(String name, String why) {
+        return new ParameterException(node.spelledOut() + ": parameter '" + name + "' " + why);
     }
 
     private ParameterException missing(String name, String expected) {
-        return new ParameterException(node + ": parameter '" + name + "' is required (" + expected + ")");
+        return problem(name, "is required: it must be " + expected);
     }
 
     private Parameter find(String name) {

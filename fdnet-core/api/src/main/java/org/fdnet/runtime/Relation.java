@@ -12,7 +12,24 @@ package org.fdnet.runtime;
  * parameter change or a module reload makes a fresh instance.
  */
 public abstract class Relation {
-    /** Reads parameters; throw {@link ParameterException} (via {@link NodeParameters}) on a bad one. */
+    /** Fire every this many milliseconds; the engine reads it for every Relation. */
+    public static final ParameterSpec<Long> PERIOD = ParameterSpec.whole("period").unit("ms").atLeast(0)
+            .defaultValue(0L).describe("fire every this many milliseconds (0: never by time)").live();
+    /** Fire when a Data it reads changes; the engine reads it for every Relation. */
+    public static final ParameterSpec<Boolean> ON_INPUT = ParameterSpec.flag("onInput")
+            .defaultDescribed("true without a period or with triggers, else false")
+            .describe("fire when a Data it reads changes").live();
+    /** Only these inputs fire it; the engine reads it for every Relation. */
+    public static final ParameterSpec<String> TRIGGERS = ParameterSpec.text("triggers").optional()
+            .describe("comma-separated names of the inputs whose changes fire it (the others are only read)").live();
+
+    /**
+     * Reads parameters, each with its declaration ({@link ParameterSpec#read}); the engine has already checked
+     * every declared one. Throw {@link ParameterException} ({@link NodeParameters#conflict}) when two disagree.
+     *
+     * @param parameters the node's parameters
+     * @throws Exception when the node cannot start; the message is shown with the node's name
+     */
     protected void init(NodeParameters parameters) throws Exception {
     }
 

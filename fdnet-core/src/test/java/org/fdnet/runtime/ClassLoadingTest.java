@@ -7,6 +7,9 @@ import static org.fdnet.runtime.TestNetworks.*;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.jar.JarEntry;
+import java.util.jar.JarOutputStream;
+import java.util.stream.Stream;
 import javax.tools.JavaCompiler;
 import javax.tools.ToolProvider;
 import org.fdnet.netinfo.NetworkInfo;
@@ -15,6 +18,8 @@ import org.fdnet.netinfo.NodeKind;
 import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.fdnet.runtime.engine.RuntimeOptions;
 import org.fdnet.runtime.loading.ClassLoadingPolicy;
+import org.fdnet.runtime.loading.NodeClassException;
+import org.fdnet.runtime.loading.NodeClassResolver;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -99,7 +104,97 @@ class ClassLoadingTest {
                 .hasMessageContaining("class 'plugin.Missing'").hasMessageContaining("class not found under");
     }
 
-    private static void compile(Path folder, String constant) throws Exception {
+    @Test
+    void shouldRunANodeFromAJarBuiltInTheTest() throws Exception {
+        Path network = dir.resolve("x.fdn");
+        jar(compile(dir.resolve("classes"), "10"), Files.createDirectories(dir.resolve("lib")).resolve("emit.jar"));
+        NetworkInfo n = new NetworkInfo("x");
+        n.addNode("main", data("A", "DoubleData"));
+        n.addNode("main", relationAt("First", "lib/emit.jar", "plugin.Emit"));
+        write(n, "main", "First", "A");
+        try (RuntimeNetwork net = RuntimeNetwork.start(n, optionsFor(network))) {
+            quiet(net);
+            assertThat(net.controller().value(ref("A")).asDouble()).isEqualTo(10.0);
+        }
+    }
+
+    @Test
+    void shouldRunNodesFromAFolderOfJarsAndItsClasses() throws Exception {
+        Path network = dir.resolve("x.fdn");
+        Path jars = Files.createDirectories(dir.resolve("jars"));
+        jar(compile(dir.resolve("classes"), "30"), jars.resolve("emit.jar"));
+        compileInto(jars, "Loose", "public class Loose extends org.fdnet.runtime.Relation {\n"
+                + "  protected void compute(org.fdnet.runtime.RelationContext c) {\n"
+                + "    c.outputAll(org.fdnet.runtime.Value.of(7.0));\n  }\n}\n");
+        NetworkInfo n = new NetworkInfo("x");
+        n.addNode("main", data("A", "DoubleData"));
+        n.addNode("main", data("B", "DoubleData"));
+        n.addNode("main", relationAt("FromJar", "jars", "plugin.Emit"));
+        n.addNode("main", relationAt("FromFolder", "jars", "plugin.Loose"));
+        write(n, "main", "FromJar", "A");
+        write(n, "main", "FromFolder", "B");
+        try (RuntimeNetwork net = RuntimeNetwork.start(n, optionsFor(network))) {
+            quiet(net);
+            assertThat(net.controller().value(ref("A")).asDouble()).isEqualTo(30.0);
+            assertThat(net.controller().value(ref("B")).asDouble()).isEqualTo(7.0);
+        }
+    }
+
+    @Test
+    void shouldRefuseAJarOutsideTheAllowedPlaces() throws Exception {
+        Path network = Files.createDirectories(dir.resolve("net")).resolve("x.fdn");
+        jar(compile(dir.resolve("classes"), "1"), Files.createDirectories(dir.resolve("elsewhere")).resolve("emit.jar"));
+        NetworkInfo n = new NetworkInfo("x");
+        n.addNode("main", relationAt("Plugin", "../elsewhere/emit.jar", "plugin.Emit"));
+        assertThatThrownBy(() -> RuntimeNetwork.start(n, optionsFor(network)))
+                .hasMessageContaining("module 'main', node 'Plugin', class 'plugin.Emit'")
+                .hasMessageContaining("path '../elsewhere/emit.jar'").hasMessageContaining("outside the allowed places");
+    }
+
+    @Test
+    void shouldOfferTheConcreteNodeClassesOfAPathWithoutInitialisingThem() throws Exception {
+        Path classes = compile(dir.resolve("classes"), "1");
+        compileInto(classes, "Noisy", "public class Noisy extends org.fdnet.runtime.library.DoubleData {\n"
+                + "  static { System.setProperty(\"fdnet.test.noisy\", \"initialised\"); }\n}\n");
+        compileInto(classes, "Half", "public abstract class Half extends org.fdnet.runtime.Relation {}\n");
+        compileInto(classes, "Picky", "public class Picky extends org.fdnet.runtime.Relation {\n"
+                + "  public Picky(int x) {}\n"
+                + "  protected void compute(org.fdnet.runtime.RelationContext c) {}\n}\n");
+        compileInto(classes, "Plain", "public class Plain {}\n");
+        jar(classes, Files.createDirectories(dir.resolve("lib")).resolve("nodes.jar"));
+        try (NodeClassResolver resolver = new NodeClassResolver(ClassLoadingPolicy.forNetworkFile(dir.resolve("x.fdn"),
+                List.of()), Data.class, Relation.class)) {
+            assertThat(resolver.nodeClassesOn("lib/nodes.jar")).extracting(Class::getName)
+                    .containsExactly("plugin.Emit", "plugin.Noisy");
+            assertThat(resolver.nodeClassesOn("lib")).extracting(Class::getName)
+                    .containsExactly("plugin.Emit", "plugin.Noisy");
+            assertThatThrownBy(() -> resolver.nodeClassesOn("../"))
+                    .isInstanceOf(NodeClassException.class).hasMessageContaining("outside the allowed places");
+        }
+        assertThat(System.getProperty("fdnet.test.noisy")).isNull();
+    }
+
+    /** Writes every file under {@code classes} into a new jar, as a build would. */
+    private static void jar(Path classes, Path jar) throws Exception {
+        try (JarOutputStream out = new JarOutputStream(Files.newOutputStream(jar));
+             Stream<Path> files = Files.walk(classes)) {
+            for (Path f : files.filter(p -> p.toString().endsWith(".class")).toList()) {
+                out.putNextEntry(new JarEntry(classes.relativize(f).toString().replace('\\', '/')));
+                out.write(Files.readAllBytes(f));
+                out.closeEntry();
+            }
+        }
+    }
+
+    private static void compileInto(Path folder, String name, String body) throws Exception {
+        Path src = Files.createDirectories(folder.resolve("src/plugin")).resolve(name + ".java");
+        Files.writeString(src, "package plugin;\n" + body);
+        int rc = ToolProvider.getSystemJavaCompiler().run(null, null, null, "-d", folder.toString(), "-cp",
+                System.getProperty("java.class.path"), src.toString());
+        assertThat(rc).isZero();
+    }
+
+    private static Path compile(Path folder, String constant) throws Exception {
         Path src = Files.createDirectories(folder.resolve("src/plugin")).resolve("Emit.java");
         Files.writeString(src, "package plugin;\n"
                 + "public class Emit extends org.fdnet.runtime.Relation {\n"
@@ -109,5 +204,6 @@ class ClassLoadingTest {
         int rc = javac.run(null, null, null, "-d", folder.toString(), "-cp", System.getProperty("java.class.path"),
                 src.toString());
         assertThat(rc).isZero();
+        return folder;
     }
 }

@@ -10,7 +10,6 @@ import java.util.List;
 import java.util.jar.JarEntry;
 import java.util.jar.JarOutputStream;
 import java.util.stream.Stream;
-import javax.tools.JavaCompiler;
 import javax.tools.ToolProvider;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
@@ -194,16 +193,11 @@ class ClassLoadingTest {
         assertThat(rc).isZero();
     }
 
+    /** Compiles {@code plugin.Emit}, a Relation that writes {@code constant} to its outputs, into {@code folder}. */
     private static Path compile(Path folder, String constant) throws Exception {
-        Path src = Files.createDirectories(folder.resolve("src/plugin")).resolve("Emit.java");
-        Files.writeString(src, "package plugin;\n"
-                + "public class Emit extends org.fdnet.runtime.Relation {\n"
+        compileInto(folder, "Emit", "public class Emit extends org.fdnet.runtime.Relation {\n"
                 + "  protected void compute(org.fdnet.runtime.RelationContext c) {\n"
                 + "    c.outputAll(org.fdnet.runtime.Value.of(" + constant + ".0));\n  }\n}\n");
-        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
-        int rc = javac.run(null, null, null, "-d", folder.toString(), "-cp", System.getProperty("java.class.path"),
-                src.toString());
-        assertThat(rc).isZero();
         return folder;
     }
 }

@@ -7,10 +7,6 @@ import static org.fdnet.runtime.TestNetworks.*;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.jar.JarEntry;
-import java.util.jar.JarOutputStream;
-import java.util.stream.Stream;
-import javax.tools.ToolProvider;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
@@ -19,6 +15,7 @@ import org.fdnet.runtime.engine.RuntimeOptions;
 import org.fdnet.runtime.loading.ClassLoadingPolicy;
 import org.fdnet.runtime.loading.NodeClassException;
 import org.fdnet.runtime.loading.NodeClassResolver;
+import org.fdnet.testing.NodeJars;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -77,8 +74,8 @@ class ClassLoadingTest {
     @Test
     void shouldLoadEachPathsClassesWithTheirOwnLoader() throws Exception {
         Path network = dir.resolve("x.fdn");
-        compile(dir.resolve("one"), "10");
-        compile(dir.resolve("two"), "20");
+        NodeJars.compileEmit(dir.resolve("one"), "10");
+        NodeJars.compileEmit(dir.resolve("two"), "20");
         NetworkInfo n = new NetworkInfo("x");
         n.addNode("main", data("A", "DoubleData"));
         n.addNode("main", data("B", "DoubleData"));
@@ -96,7 +93,7 @@ class ClassLoadingTest {
 
     @Test
     void shouldRefuseAClassMissingFromItsPath() throws Exception {
-        compile(dir.resolve("one"), "1");
+        NodeJars.compileEmit(dir.resolve("one"), "1");
         NetworkInfo n = new NetworkInfo("x");
         n.addNode("main", relationAt("Lost", "one", "plugin.Missing"));
         assertThatThrownBy(() -> RuntimeNetwork.start(n, optionsFor(dir.resolve("x.fdn"))))
@@ -106,7 +103,7 @@ class ClassLoadingTest {
     @Test
     void shouldRunANodeFromAJarBuiltInTheTest() throws Exception {
         Path network = dir.resolve("x.fdn");
-        jar(compile(dir.resolve("classes"), "10"), Files.createDirectories(dir.resolve("lib")).resolve("emit.jar"));
+        NodeJars.jar(NodeJars.compileEmit(dir.resolve("classes"), "10"), dir.resolve("lib").resolve("emit.jar"));
         NetworkInfo n = new NetworkInfo("x");
         n.addNode("main", data("A", "DoubleData"));
         n.addNode("main", relationAt("First", "lib/emit.jar", "plugin.Emit"));
@@ -121,8 +118,8 @@ class ClassLoadingTest {
     void shouldRunNodesFromAFolderOfJarsAndItsClasses() throws Exception {
         Path network = dir.resolve("x.fdn");
         Path jars = Files.createDirectories(dir.resolve("jars"));
-        jar(compile(dir.resolve("classes"), "30"), jars.resolve("emit.jar"));
-        compileInto(jars, "Loose", "public class Loose extends org.fdnet.runtime.Relation {\n"
+        NodeJars.jar(NodeJars.compileEmit(dir.resolve("classes"), "30"), jars.resolve("emit.jar"));
+        NodeJars.compile(jars, "Loose", "public class Loose extends org.fdnet.runtime.Relation {\n"
                 + "  protected void compute(org.fdnet.runtime.RelationContext c) {\n"
                 + "    c.outputAll(org.fdnet.runtime.Value.of(7.0));\n  }\n}\n");
         NetworkInfo n = new NetworkInfo("x");
@@ -142,7 +139,7 @@ class ClassLoadingTest {
     @Test
     void shouldRefuseAJarOutsideTheAllowedPlaces() throws Exception {
         Path network = Files.createDirectories(dir.resolve("net")).resolve("x.fdn");
-        jar(compile(dir.resolve("classes"), "1"), Files.createDirectories(dir.resolve("elsewhere")).resolve("emit.jar"));
+        NodeJars.jar(NodeJars.compileEmit(dir.resolve("classes"), "1"), dir.resolve("elsewhere").resolve("emit.jar"));
         NetworkInfo n = new NetworkInfo("x");
         n.addNode("main", relationAt("Plugin", "../elsewhere/emit.jar", "plugin.Emit"));
         assertThatThrownBy(() -> RuntimeNetwork.start(n, optionsFor(network)))
@@ -152,15 +149,15 @@ class ClassLoadingTest {
 
     @Test
     void shouldOfferTheConcreteNodeClassesOfAPathWithoutInitialisingThem() throws Exception {
-        Path classes = compile(dir.resolve("classes"), "1");
-        compileInto(classes, "Noisy", "public class Noisy extends org.fdnet.runtime.library.DoubleData {\n"
+        Path classes = NodeJars.compileEmit(dir.resolve("classes"), "1");
+        NodeJars.compile(classes, "Noisy", "public class Noisy extends org.fdnet.runtime.library.DoubleData {\n"
                 + "  static { System.setProperty(\"fdnet.test.noisy\", \"initialised\"); }\n}\n");
-        compileInto(classes, "Half", "public abstract class Half extends org.fdnet.runtime.Relation {}\n");
-        compileInto(classes, "Picky", "public class Picky extends org.fdnet.runtime.Relation {\n"
+        NodeJars.compile(classes, "Half", "public abstract class Half extends org.fdnet.runtime.Relation {}\n");
+        NodeJars.compile(classes, "Picky", "public class Picky extends org.fdnet.runtime.Relation {\n"
                 + "  public Picky(int x) {}\n"
                 + "  protected void compute(org.fdnet.runtime.RelationContext c) {}\n}\n");
-        compileInto(classes, "Plain", "public class Plain {}\n");
-        jar(classes, Files.createDirectories(dir.resolve("lib")).resolve("nodes.jar"));
+        NodeJars.compile(classes, "Plain", "public class Plain {}\n");
+        NodeJars.jar(classes, dir.resolve("lib").resolve("nodes.jar"));
         try (NodeClassResolver resolver = new NodeClassResolver(ClassLoadingPolicy.forNetworkFile(dir.resolve("x.fdn"),
                 List.of()), Data.class, Relation.class)) {
             assertThat(resolver.nodeClassesOn("lib/nodes.jar")).extracting(Class::getName)
@@ -171,33 +168,5 @@ class ClassLoadingTest {
                     .isInstanceOf(NodeClassException.class).hasMessageContaining("outside the allowed places");
         }
         assertThat(System.getProperty("fdnet.test.noisy")).isNull();
-    }
-
-    /** Writes every file under {@code classes} into a new jar, as a build would. */
-    private static void jar(Path classes, Path jar) throws Exception {
-        try (JarOutputStream out = new JarOutputStream(Files.newOutputStream(jar));
-             Stream<Path> files = Files.walk(classes)) {
-            for (Path f : files.filter(p -> p.toString().endsWith(".class")).toList()) {
-                out.putNextEntry(new JarEntry(classes.relativize(f).toString().replace('\\', '/')));
-                out.write(Files.readAllBytes(f));
-                out.closeEntry();
-            }
-        }
-    }
-
-    private static void compileInto(Path folder, String name, String body) throws Exception {
-        Path src = Files.createDirectories(folder.resolve("src/plugin")).resolve(name + ".java");
-        Files.writeString(src, "package plugin;\n" + body);
-        int rc = ToolProvider.getSystemJavaCompiler().run(null, null, null, "-d", folder.toString(), "-cp",
-                System.getProperty("java.class.path"), src.toString());
-        assertThat(rc).isZero();
-    }
-
-    /** Compiles {@code plugin.Emit}, a Relation that writes {@code constant} to its outputs, into {@code folder}. */
-    private static Path compile(Path folder, String constant) throws Exception {
-        compileInto(folder, "Emit", "public class Emit extends org.fdnet.runtime.Relation {\n"
-                + "  protected void compute(org.fdnet.runtime.RelationContext c) {\n"
-                + "    c.outputAll(org.fdnet.runtime.Value.of(" + constant + ".0));\n  }\n}\n");
-        return folder;
     }
 }

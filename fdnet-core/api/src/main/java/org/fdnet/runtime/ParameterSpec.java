@@ -53,6 +53,7 @@ public final class ParameterSpec<T> {
     private String unit = "";
     private T defaultValue;
     private String defaultText;
+    private boolean defaultIsValue;
     private boolean optional;
     private String description = "";
     private boolean live;
@@ -76,6 +77,7 @@ public final class ParameterSpec<T> {
         c.unit = unit;
         c.defaultValue = defaultValue;
         c.defaultText = defaultText;
+        c.defaultIsValue = defaultIsValue;
         c.optional = optional;
         c.description = description;
         c.live = live;
@@ -278,6 +280,7 @@ public final class ParameterSpec<T> {
         ParameterSpec<T> c = copy();
         c.defaultValue = value;
         c.defaultText = printed(value);
+        c.defaultIsValue = value != null;
         c.optional = true;
         return c;
     }
@@ -294,6 +297,7 @@ public final class ParameterSpec<T> {
         ParameterSpec<T> c = copy();
         c.defaultValue = null;
         c.defaultText = text;
+        c.defaultIsValue = false;
         c.optional = true;
         return c;
     }
@@ -307,6 +311,7 @@ public final class ParameterSpec<T> {
         ParameterSpec<T> c = copy();
         c.defaultValue = null;
         c.defaultText = null;
+        c.defaultIsValue = false;
         c.optional = false;
         return c;
     }
@@ -508,6 +513,16 @@ public final class ParameterSpec<T> {
      */
     public String defaultText() {
         return defaultText;
+    }
+
+    /**
+     * Whether {@link #defaultText()} is a value a file could give (from {@link #defaultValue(Object)}), rather than
+     * words ({@link #defaultDescribed}).
+     *
+     * @return true for a default value
+     */
+    public boolean hasDefaultValue() {
+        return defaultIsValue;
     }
 
     /**

@@ -32,7 +32,7 @@ public class DoublesData extends Data {
 
     @Override
     protected Value initialValue(NodeParameters parameters) {
-        if (!parameters.has("initial") && length > 0) {
+        if (!INITIAL.isGiven(parameters) && length > 0) {
             return Value.ofDoubles(new double[length]);
         }
         return super.initialValue(parameters);

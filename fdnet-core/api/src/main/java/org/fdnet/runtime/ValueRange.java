@@ -18,6 +18,10 @@ public record ValueRange(double min, boolean minIncluded, double max, boolean ma
     /**
      * Checks that the bounds make a range.
      *
+     * @param min         the lower bound ({@link Double#NEGATIVE_INFINITY}: none)
+     * @param minIncluded whether {@code min} itself is allowed
+     * @param max         the upper bound ({@link Double#POSITIVE_INFINITY}: none)
+     * @param maxIncluded whether {@code max} itself is allowed
      * @throws IllegalArgumentException when a bound is NaN or the lower one lies above the upper one
      */
     public ValueRange {

@@ -59,6 +59,11 @@ public final class InProcessLogger implements AutoCloseable {
         return new InProcessLogger(started(config), null, null);
     }
 
+    /** A logger on the database {@code config} names (embedded or external); the caller owns the config's ports. */
+    public static InProcessLogger of(LoggerConfig config) throws IOException, SQLException {
+        return new InProcessLogger(started(config), null, null);
+    }
+
     private static NetworkStateLogger started(LoggerConfig config) throws IOException, SQLException {
         NetworkStateLogger logger = new NetworkStateLogger(config);
         try {

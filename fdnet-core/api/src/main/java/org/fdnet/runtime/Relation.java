@@ -10,6 +10,31 @@ package org.fdnet.runtime;
  * engine never runs one instance twice at a time, so a Relation keeps state in plain fields. An
  * exception from {@code compute} marks the Relation FAILED (its writes of that firing are dropped); a
  * parameter change or a module reload makes a fresh instance.
+ *
+ * <p>A Relation that scales its first input by the parameter {@code gain} and writes it to every output; it
+ * declares the parameter once ({@link ParameterSpec}), and the engine checks it before {@code init}:
+ *
+ * <pre>{@code
+ * public class Gain extends Relation {
+ *     public static final ParameterSpec<Double> GAIN = ParameterSpec.number("gain").range(0, 10).defaultValue(1.0)
+ *             .describe("the factor the input is multiplied by").live();
+ *
+ *     private double gain;
+ *
+ *     @Override
+ *     protected void init(NodeParameters parameters) {
+ *         gain = GAIN.read(parameters);
+ *     }
+ *
+ *     @Override
+ *     protected void compute(RelationContext context) {
+ *         Value in = context.input(0);   // null while that Data is not in the running network
+ *         if (in != null) {
+ *             context.outputAll(Value.of(gain * in.asDouble()));
+ *         }
+ *     }
+ * }
+ * }</pre>
  */
 public abstract class Relation {
     /** Fire every this many milliseconds; the engine reads it for every Relation. */
@@ -24,11 +49,13 @@ public abstract class Relation {
             .describe("comma-separated names of the inputs whose changes fire it (the others are only read)").live();
 
     /**
-     * Reads parameters, each with its declaration ({@link ParameterSpec#read}); the engine has already checked
-     * every declared one. Throw {@link ParameterException} ({@link NodeParameters#conflict}) when two disagree.
+     * Reads parameters, once, before the first firing, each with its declaration ({@link ParameterSpec#read}); the
+     * engine has already checked every declared one. Throw {@link ParameterException}
+     * ({@link NodeParameters#conflict}) when two disagree.
      *
-     * @param parameters the node's parameters
-     * @throws Exception when the node cannot start; the message is shown with the node's name
+     * @param parameters the node's parameters as the network file gives them
+     * @throws Exception when the node cannot start: the start, module load or change that would make it is
+     *                   refused, with this message after the node's name, and the network stays as it was
      */
     protected void init(NodeParameters parameters) throws Exception {
     }
@@ -36,6 +63,9 @@ public abstract class Relation {
     /**
      * One firing: read inputs from {@code context} (a consistent snapshot), write outputs to it (they
      * become visible together when this returns normally).
+     *
+     * @param context this firing's inputs, outputs, clock and the Servants; valid only until this returns
+     * @throws Exception to fail the firing: its writes are dropped and the Relation is marked FAILED
      */
     protected abstract void compute(RelationContext context) throws Exception;
 

@@ -36,7 +36,8 @@ class ArchitectureTest {
     void shouldSeeTheMainCodeOfEveryModule() {
         Set<String> modules = classes.stream().map(FdnetModules::moduleOf).collect(Collectors.toSet());
         assertThat(modules).contains("fdnet-core/api", CORE, "fdnet-logger", "fdnet-viewer", "fdnet-hi", "roq-sim",
-                "fdnet-core/bench", "fdnet-logger/bench", "fdnet-viewer/bench", "fdnet-hi/bench", "roq-sim/bench");
+                "fdnet-core/bench", "fdnet-logger/bench", "fdnet-viewer/bench", "fdnet-hi/bench", "roq-sim/bench",
+                "fdnet-core/testkit", "roq-sim/testkit");
         assertThat(modules).doesNotContain("");
     }
 
@@ -96,6 +97,8 @@ class ArchitectureTest {
                 .layer("Viewer").definedBy(inModule("fdnet-viewer"))
                 .layer("Editor").definedBy(inModule("fdnet-hi"))
                 .layer("Simulator").definedBy(inModule("roq-sim"))
+                .layer("Test kit").definedBy(inModule("fdnet-core/testkit"))
+                .layer("Robot test kit").definedBy(inModule("roq-sim/testkit"))
                 .layer("Bench").definedBy(inABenchModule())
 
                 .whereLayer("Api").mayNotAccessAnyLayer()
@@ -114,6 +117,11 @@ class ArchitectureTest {
                         "Distribution", "Commands", "Viewer")
                 .whereLayer("Simulator").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine",
                         "Control", "Distribution", "Commands", "Logger", "Viewer")
+                .whereLayer("Test kit").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine")
+                .whereLayer("Robot test kit").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine",
+                        "Logger", "Simulator", "Test kit")
+                .whereLayer("Test kit").mayOnlyBeAccessedByLayers("Robot test kit")
+                .whereLayer("Robot test kit").mayNotBeAccessedByAnyLayer()
                 .whereLayer("Bench").mayNotBeAccessedByAnyLayer();
     }
 }

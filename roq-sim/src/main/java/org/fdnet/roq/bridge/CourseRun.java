@@ -91,13 +91,9 @@ public record CourseRun(String label, double distance, double trackError, double
         return net;
     }
 
-    /**
-     * The 4 m × 2 m rubble course of the suites: 6 cm blocks of 0.25 m, 5 cm cells, RoQ starting 1.5 m before the
-     * middle; {@code seed} places the blocks.
-     */
+    /** The rubble course of the suites ({@link CourseLoader#rubble}). */
     public static Course rubble(long seed) throws CourseFormatException {
-        return CourseLoader.parse("rubble " + seed, "name = rubble" + seed + "\nterrain = rubble\nlength = 4\nwidth = 2"
-                + "\ncell = 0.05\nrubble.height = 0.06\nrubble.block = 0.25\nseed = " + seed + "\nstart = -1.5 0\n");
+        return CourseLoader.rubble(seed);
     }
 
     static Value value(RuntimeNetwork net, String node, String module) {

@@ -53,6 +53,25 @@ public final class CourseLoader {
         return load(Path.of(nameOrPath));
     }
 
+    /**
+     * The rubble course of the robot suites and the test kit's {@code rubble:SEED}: 4 m × 2 m, 6 cm blocks 0.25 m
+     * wide placed by {@code seed}, 5 cm cells, RoQ starting 1.5 m before the middle.
+     */
+    public static Course rubble(long seed) throws CourseFormatException {
+        return parse("rubble:" + seed, "name = rubble" + seed + "\nterrain = rubble\nlength = 4\nwidth = 2"
+                + "\ncell = 0.05\nrubble.height = 0.06\nrubble.block = 0.25\nseed = " + seed + "\nstart = -1.5 0\n");
+    }
+
+    /**
+     * The slope course of the robot suites and the test kit's {@code slope:DEGREES}: level up to x = 0, then
+     * {@code degrees} up (negative: down) to x = 3; RoQ starts 0.4 m before the incline.
+     */
+    public static Course slope(double degrees) throws CourseFormatException {
+        String d = degrees == Math.rint(degrees) ? Long.toString((long) degrees) : Double.toString(degrees);
+        return parse("slope:" + d, "name = slope" + d + "\nterrain = slope\nslope = " + d
+                + "\nlength = 6\nwidth = 2\ncell = 0.05\nstart = -0.4 0\n");
+    }
+
     /** Reads the course file {@code file}. */
     public static Course load(Path file) throws CourseFormatException {
         String text;

@@ -12,7 +12,9 @@ import java.util.List;
  * command that installs it.
  *
  * <p>Where the library is looked for: the system property {@value #LIBRARY_PROPERTY}; else {@code native/} beside
- * the directory or jar roq-sim's classes come from (the Maven build puts it in {@code roq-sim/target/native}).
+ * the directory or jar roq-sim's classes come from (the Maven build puts it in {@code roq-sim/target/native}); else
+ * the copy inside roq-sim's jar ({@link BundledNativeLibrary}), which is how a project that depends on the installed
+ * artifact gets it.
  */
 public final class RoqNativeLibrary {
     /** System property naming the library file. */
@@ -91,6 +93,14 @@ public final class RoqNativeLibrary {
         if (property != null && !property.isBlank()) {
             return Path.of(property);
         }
+        Path beside = besideTheClasses();
+        if (Files.isRegularFile(beside)) {
+            return beside;
+        }
+        return BundledNativeLibrary.extracted().orElse(beside);
+    }
+
+    private static Path besideTheClasses() {
         CodeSource source = RoqNativeLibrary.class.getProtectionDomain().getCodeSource();
         if (source != null) {
             try {

@@ -104,6 +104,14 @@ public final class RoqDemoPanel extends JPanel {
         view.repaint();
     }
 
+    /**
+     * Adds a point of the body's path without a snapshot (a picture drawn after the run from its recorded trail).
+     * Call on the event dispatch thread.
+     */
+    public void trace(double x, double y) {
+        appendPath(x, y);
+    }
+
     private void appendPath(double x, double y) {
         if (points > 0 && Math.hypot(path[2 * points - 2] - x, path[2 * points - 1] - y) < 0.005) {
             return;

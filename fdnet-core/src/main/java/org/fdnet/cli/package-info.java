@@ -4,7 +4,7 @@
  * commands without depending on the engine.
  *
  * <pre>
- *   bin/fdnet ──▶ FdnetCommand.main ──▶ core commands (validate, info, fmt, keys)
+ *   bin/fdnet ──▶ FdnetCommand.main ──▶ core commands (validate, info [--params: ParameterListing], fmt, keys)
  *                        │
  *                        ├── ServiceLoader&lt;CommandProvider&gt; ──▶ commands of every module (run, host, logger, demo, ...)
  *                        └── bench (BenchCommand names none) ──▶ benchmarks of every bench module

@@ -73,22 +73,10 @@ class ClassLoadingTest {
 
     @Test
     void shouldLoadEachPathsClassesWithTheirOwnLoader() throws Exception {
-        Path network = dir.resolve("x.fdn");
         NodeJars.compileEmit(dir.resolve("one"), "10");
         NodeJars.compileEmit(dir.resolve("two"), "20");
-        NetworkInfo n = new NetworkInfo("x");
-        n.addNode("main", data("A", "DoubleData"));
-        n.addNode("main", data("B", "DoubleData"));
-        n.addNode("main", relationAt("First", "one", "plugin.Emit"));
-        n.addNode("main", relationAt("Second", "two", "plugin.Emit"));
-        write(n, "main", "First", "A");
-        write(n, "main", "Second", "B");
-        try (RuntimeNetwork net = RuntimeNetwork.start(n, optionsFor(network))) {
-            quiet(net);
-            // same class name, two folders: two classes, each with its own constant
-            assertThat(net.controller().value(ref("A")).asDouble()).isEqualTo(10.0);
-            assertThat(net.controller().value(ref("B")).asDouble()).isEqualTo(20.0);
-        }
+        // same class name, two folders: two classes, each with its own constant
+        assertThat(written("one", "plugin.Emit", "two", "plugin.Emit")).containsExactly(10.0, 20.0);
     }
 
     @Test
@@ -102,37 +90,37 @@ class ClassLoadingTest {
 
     @Test
     void shouldRunANodeFromAJarBuiltInTheTest() throws Exception {
-        Path network = dir.resolve("x.fdn");
         NodeJars.jar(NodeJars.compileEmit(dir.resolve("classes"), "10"), dir.resolve("lib").resolve("emit.jar"));
-        NetworkInfo n = new NetworkInfo("x");
-        n.addNode("main", data("A", "DoubleData"));
-        n.addNode("main", relationAt("First", "lib/emit.jar", "plugin.Emit"));
-        write(n, "main", "First", "A");
-        try (RuntimeNetwork net = RuntimeNetwork.start(n, optionsFor(network))) {
-            quiet(net);
-            assertThat(net.controller().value(ref("A")).asDouble()).isEqualTo(10.0);
-        }
+        NodeJars.jar(NodeJars.compileEmit(dir.resolve("other"), "20"), dir.resolve("lib").resolve("other.jar"));
+        assertThat(written("lib/emit.jar", "plugin.Emit", "lib/other.jar", "plugin.Emit")).containsExactly(10.0, 20.0);
     }
 
     @Test
     void shouldRunNodesFromAFolderOfJarsAndItsClasses() throws Exception {
-        Path network = dir.resolve("x.fdn");
         Path jars = Files.createDirectories(dir.resolve("jars"));
         NodeJars.jar(NodeJars.compileEmit(dir.resolve("classes"), "30"), jars.resolve("emit.jar"));
         NodeJars.compile(jars, "Loose", "public class Loose extends org.fdnet.runtime.Relation {\n"
                 + "  protected void compute(org.fdnet.runtime.RelationContext c) {\n"
                 + "    c.outputAll(org.fdnet.runtime.Value.of(7.0));\n  }\n}\n");
+        assertThat(written("jars", "plugin.Emit", "jars", "plugin.Loose")).containsExactly(30.0, 7.0);
+    }
+
+    /**
+     * Runs a network of {@code x.fdn} in the test folder where Relation First (class {@code firstClass} on
+     * {@code firstPath}) writes Data A and Second writes B, and returns what A and B hold once it is quiet.
+     */
+    private double[] written(String firstPath, String firstClass, String secondPath, String secondClass)
+            throws Exception {
         NetworkInfo n = new NetworkInfo("x");
         n.addNode("main", data("A", "DoubleData"));
         n.addNode("main", data("B", "DoubleData"));
-        n.addNode("main", relationAt("FromJar", "jars", "plugin.Emit"));
-        n.addNode("main", relationAt("FromFolder", "jars", "plugin.Loose"));
-        write(n, "main", "FromJar", "A");
-        write(n, "main", "FromFolder", "B");
-        try (RuntimeNetwork net = RuntimeNetwork.start(n, optionsFor(network))) {
+        n.addNode("main", relationAt("First", firstPath, firstClass));
+        n.addNode("main", relationAt("Second", secondPath, secondClass));
+        write(n, "main", "First", "A");
+        write(n, "main", "Second", "B");
+        try (RuntimeNetwork net = RuntimeNetwork.start(n, optionsFor(dir.resolve("x.fdn")))) {
             quiet(net);
-            assertThat(net.controller().value(ref("A")).asDouble()).isEqualTo(30.0);
-            assertThat(net.controller().value(ref("B")).asDouble()).isEqualTo(7.0);
+            return new double[] {net.controller().value(ref("A")).asDouble(), net.controller().value(ref("B")).asDouble()};
         }
     }
 

@@ -7,6 +7,7 @@ import java.util.List;
 import org.fdnet.event.ValueType;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.Parameter;
+import org.fdnet.netinfo.ValueRange;
 import org.fdnet.runtime.library.PeriodicSource;
 import org.fdnet.runtime.library.Threshold;
 import org.junit.jupiter.api.Test;

@@ -6,6 +6,7 @@ import java.util.Locale;
 import java.util.function.Function;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.ParameterType;
+import org.fdnet.netinfo.ValueRange;
 
 /**
  * One parameter of a node class, declared once: its name, type, unit, default, range, description and whether it

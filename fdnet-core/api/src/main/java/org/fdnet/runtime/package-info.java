@@ -15,7 +15,7 @@
  *        │                                  └──▶ fdnet info --params, the editor's node form (descriptions)
  *        └──▶ init: SPEC.read(parameters) ──▶ the value, default applied
  * </pre>
- * {@link org.fdnet.runtime.ValueRange} words every range, here and in the logger's settings.
+ * {@link org.fdnet.netinfo.ValueRange} words every range, here and in the logger's settings.
  *
  * <p>This package imports nothing of the engine (ArchitectureTest fails the build otherwise); it imports only
  * {@code netinfo} and {@code event} (fdnet-api). Where the API must reach the engine, the engine implements an

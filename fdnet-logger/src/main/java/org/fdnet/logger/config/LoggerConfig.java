@@ -3,7 +3,7 @@ package org.fdnet.logger.config;
 import java.nio.file.Path;
 import java.util.EnumMap;
 import java.util.Map;
-import org.fdnet.runtime.ValueRange;
+import org.fdnet.netinfo.ValueRange;
 
 /**
  * The logger's configuration: every parameter of the thesis's panels, validated when set with a message

@@ -1,9 +1,9 @@
-package org.fdnet.runtime;
+package org.fdnet.netinfo;
 
 /**
  * The numbers a setting accepts: a lower and an upper bound, each included or not, either of them open-ended
- * (an infinite bound). Node parameters ({@link ParameterSpec}) and the logger's settings both check with it, so a
- * refusal is worded alike everywhere and always names what is allowed:
+ * (an infinite bound). Node parameters ({@code org.fdnet.runtime.ParameterSpec}) and the logger's settings both check
+ * with it, so a refusal is worded alike everywhere and always names what is allowed:
  * {@code "writer.batchSize must be in [1, 1000000], was 0"}, {@code "must be above 0 N, was -2"}.
  *
  * @param min          the lower bound ({@link Double#NEGATIVE_INFINITY}: none)

@@ -37,6 +37,13 @@ class ParameterSpecTest {
     }
 
     @Test
+    void shouldNotWriteTheUnitOfARatioAfterItsRange() {
+        ParameterSpec<Double> ratio = ParameterSpec.number("ratio").unit("1").range(0, 10);
+        assertThatThrownBy(() -> ratio.read(given("ratio=12")))
+                .hasMessageEndingWith("parameter 'ratio' must be a number in [0, 10], was 12");
+    }
+
+    @Test
     void shouldRefuseAMissingRequiredParameterSayingWhatItMustBe() {
         ParameterSpec<Long> window = ParameterSpec.whole("window").atLeast(1);
         assertThatThrownBy(() -> window.read(given()))

@@ -43,6 +43,9 @@ import org.fdnet.netinfo.ValueRange;
  *            {@code double[]}, an enum, or what a {@link #parsed} declaration's parser makes
  */
 public final class ParameterSpec<T> {
+    /** The unit of a ratio or a gain, declared for the record but not written after numbers. */
+    public static final String DIMENSIONLESS = "1";
+
     private final String name;
     private final ParameterType fileType;
     private final String expected;
@@ -188,7 +191,8 @@ public final class ParameterSpec<T> {
     }
 
     /**
-     * The unit of a number, written after it in messages and lists ({@code m}, {@code rad/s}, {@code 1}).
+     * The unit of a number, written after it in messages and lists ({@code m}, {@code rad/s}; {@code 1}, for a ratio
+     * or a gain, is not written).
      *
      * @param symbol the unit
      * @return a new declaration
@@ -441,11 +445,12 @@ public final class ParameterSpec<T> {
      */
     public String requirement() {
         String off = alsoAllowed == null ? "" : printed(alsoAllowed) + " or ";
+        String shown = unit.equals(DIMENSIONLESS) ? "" : unit;
         if (!range.isBounded()) {
-            return off + expected + (unit.isEmpty() ? "" : " (" + unit + ")");
+            return off + expected + (shown.isEmpty() ? "" : " (" + shown + ")");
         }
         String each = fileType == ParameterType.DOUBLES ? ", each " : " ";
-        return off + expected + each + range.phrase(unit);
+        return off + expected + each + range.phrase(shown);
     }
 
     private String printed(T value) {

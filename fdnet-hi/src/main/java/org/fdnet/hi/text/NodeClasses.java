@@ -6,6 +6,7 @@ import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 import java.util.function.Supplier;
 import org.fdnet.netinfo.ModuleInfo;
@@ -44,6 +45,7 @@ final class NodeClasses implements AutoCloseable {
     private NodeClassResolver resolver;
     private final Map<String, List<Class<?>>> scanned = new HashMap<>();
     private final Map<String, String> problems = new HashMap<>();
+    private String lastScanProblem;
 
     NodeClasses(Supplier<Path> networkFile) {
         this.networkFile = networkFile;
@@ -51,8 +53,12 @@ final class NodeClasses implements AutoCloseable {
 
     private NodeClassResolver resolver() {
         Path file = networkFile.get();
-        if (resolver == null || !java.util.Objects.equals(file, resolverFile)) {
+        if (resolver == null || !Objects.equals(file, resolverFile)) {
             close();
+            if (!Objects.equals(file, resolverFile)) {
+                scanned.clear(); // paths are relative to the file's folder
+                problems.clear();
+            }
             resolverFile = file;
             ClassLoadingPolicy policy = file == null ? ClassLoadingPolicy.builtInOnly()
                     : ClassLoadingPolicy.forNetworkFile(file, List.of());
@@ -76,31 +82,39 @@ final class NodeClasses implements AutoCloseable {
         }
         Class<?> base = kind == NodeKind.DATA ? Data.class : Relation.class;
         List<Choice> found = new ArrayList<>();
+        List<String> unreadable = new ArrayList<>();
         for (String path : paths) {
             for (Class<?> c : scan(path)) {
                 if (base.isAssignableFrom(c)) {
                     found.add(new Choice(c.getName(), path));
                 }
             }
+            if (problems.containsKey(path)) {
+                unreadable.add(problems.get(path));
+            }
         }
+        lastScanProblem = unreadable.isEmpty() ? null : String.join("; ", unreadable);
         return found;
     }
 
     private List<Class<?>> scan(String path) {
-        return scanned.computeIfAbsent(path, p -> {
+        NodeClassResolver r = resolver();
+        List<Class<?>> found = scanned.get(path);
+        if (found == null) {
             try {
-                problems.remove(p);
-                return resolver().nodeClassesOn(p);
+                found = r.nodeClassesOn(path);
             } catch (NodeClassException e) {
-                problems.put(p, e.getMessage());
-                return List.of();
+                problems.put(path, e.getMessage());
+                found = List.of();
             }
-        });
+            scanned.put(path, found);
+        }
+        return found;
     }
 
-    /** Why the paths scanned last could not all be read, or {@code null}. */
+    /** Why a path of the last {@link #choices} could not be read, or {@code null}. */
     String scanProblem() {
-        return problems.isEmpty() ? null : String.join("; ", new java.util.TreeMap<>(problems).values());
+        return lastScanProblem;
     }
 
     /** The parameters the class of a node being typed declares. */

@@ -213,7 +213,7 @@ public final class NodeFormModel {
         return classes.choices(editor.network(), path, kind);
     }
 
-    /** Why a path of the network could not be scanned for classes, or null. */
+    /** Why a path of the last {@link #classChoices} could not be scanned for classes, or null. */
     public String classScanProblem() {
         return classes.scanProblem();
     }

@@ -212,6 +212,9 @@ class NodeFormModelTest {
             jarForm.typePath("../outside");
             assertThat(jarForm.classChoices()).hasSize(1);
             assertThat(jarForm.classScanProblem()).contains("path '../outside'");
+            jarForm.typePath("lib/nodes.jar");
+            assertThat(jarForm.classChoices()).hasSize(1);
+            assertThat(jarForm.classScanProblem()).as("a path typed on from a bad one").isNull();
         } finally {
             jarForm.detach();
         }

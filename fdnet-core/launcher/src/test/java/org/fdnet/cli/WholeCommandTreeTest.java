@@ -15,7 +15,9 @@ class WholeCommandTreeTest {
     @Test
     void shouldOfferEveryPartsCommands() {
         assertThat(fdnet.getSubcommands()).containsKeys("validate", "info", "fmt", "keys", "run", "naming", "host",
-                "control", "logger", "viewer", "hi", "sim", "demo", "soak", "bench");
+                "control", "logger", "viewer", "hi", "sim", "demo", "soak", "bench", "sdk", "new");
+        assertThat(fdnet.getSubcommands().get("sdk").getSubcommands()).containsKey("install");
+        assertThat(fdnet.getSubcommands().get("new").getSubcommands()).containsKey("nodes");
     }
 
     @Test

@@ -1,36 +1,35 @@
-package org.fdnet.roq.bridge;
+package org.fdnet.roq.testkit.suites;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
-import org.fdnet.netinfo.NodeRef;
-import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.roq.sim.Course;
-import org.fdnet.roq.sim.CourseLoader;
 import org.fdnet.roq.sim.FragileCell;
 import org.fdnet.roq.sim.RoqGeometry;
-import org.fdnet.roq.sim.RoqSimulator;
-import org.fdnet.roq.sim.SimMode;
+import org.fdnet.roq.testkit.CourseSpec;
+import org.fdnet.roq.testkit.RoqMeasures;
+import org.fdnet.roq.testkit.SimulatedRoq;
 import org.fdnet.runtime.Value;
-import org.fdnet.runtime.engine.DrivenClock;
-import org.fdnet.runtime.engine.RuntimeNetwork;
-import org.fdnet.runtime.engine.RuntimeOptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
- * networks/roq-rubble.fdn on the simulated RoQ, stepped: flat ground with and without a fragile cell, and the
- * {@code crossing} course (rubble with bands of fragile cells in the feet's lanes).
+ * networks/roq-rubble.fdn on the simulated RoQ, sensor noise off: flat ground with and without a fragile cell, and the
+ * {@code crossing} course (rubble with bands of fragile cells in the feet's lanes). Module Probing presses each
+ * foothold before it takes load and rejects one that gives way; without it the crusts break under loaded feet.
  */
 @Timeout(120)
 class RoqRubbleTest {
-    private static final Path RUBBLE = Path.of("..", "networks", "roq-rubble.fdn");
+    private static final Path RUBBLE = Path.of("../../networks/roq-rubble.fdn");
 
     /**
      * What a run saw, counted each 10 ms.
      *
-     * @param brokenWhileLoaded  ground truth ({@link CourseMeter}): cells broken other than under a pressing probe
+     * @param brokenWhileLoaded  ground truth: cells broken other than under a pressing probe
+     * @param fragileFound       module Probing's own count of footholds that gave way under the probe
+     * @param fragileAvoided     module Probing's own count of those avoided by a shorter step that held
      * @param cellsFoundByProbe  cells that broke under a pressing probe whose foothold the probe then rejected
      * @param cellsRetried       shorter steps the same leg probed next after such a rejection
      * @param cellsAvoided       of those, the ones where that shorter step was accepted
@@ -39,78 +38,82 @@ class RoqRubbleTest {
                long fragileFound, long fragileAvoided, int cellsFoundByProbe, int cellsRetried, int cellsAvoided) {
     }
 
-    static Run run(String course, int seconds, String... unloaded) throws Exception {
-        return run(CourseLoader.resolve(course), seconds, unloaded);
-    }
+    /**
+     * Follows module Probing's verdicts ({@code probe verdict}: leg, accepted (> 0) or rejected (< 0), attempt) step
+     * by step and ties each to the ground truth of which cells broke while a probe pressed.
+     */
+    private static final class ProbeLog {
+        long lastAttempt;
+        int rejected;
+        int accepted;
+        long brokeDuringAttempt = -1;
+        int foundLeg = -1;
+        int cellsFoundByProbe;
+        int cellsRetried;
+        int cellsAvoided;
+        int probeBroken;
 
-    static Run run(Course course, int seconds, String... unloaded) throws Exception {
-        try (RoqSimulator sim = RoqSimulator.open(course, SimMode.STEPPED);
-             RuntimeNetwork net = RuntimeNetwork.start(NetworkRepository.load(RUBBLE),
-                     RuntimeOptions.defaults().drivenClock(new DrivenClock(0)))) {
-            for (String module : unloaded) {
-                assertThat(net.controller().unload(module).executed()).as("unload " + module).isTrue();
-            }
-            SimBridge bridge = SimBridge.stepped(net, sim, 0, 1);
-            bridge.run(1);
-            double x0 = bridge.lastSnapshot().groundTruthBodyPosition(0);
-            CourseMeter meter = new CourseMeter(bridge.lastSnapshot(), course.fragileCells());
-            long lastAttempt = 0;
-            int rejected = 0;
-            int accepted = 0;
-            boolean fallen = false;
-            long brokeDuringAttempt = -1;
-            int foundLeg = -1;
-            int cellsFoundByProbe = 0;
-            int cellsRetried = 0;
-            int cellsAvoided = 0;
-            for (int t = 0; t < seconds * 100; t++) {
-                bridge.run(10);
-                Value verdict = value(net, "probe verdict", "Probing");
-                if (verdict != null && verdict.length() == 3 && (long) verdict.element(2) != lastAttempt
-                        && verdict.element(2) > 0) {
-                    lastAttempt = (long) verdict.element(2);
-                    int leg = (int) verdict.element(0);
-                    if (leg == foundLeg) {
-                        cellsRetried++;
-                    }
-                    if (verdict.element(1) < 0) {
-                        rejected++;
-                        if (lastAttempt == brokeDuringAttempt) {
-                            cellsFoundByProbe++;
-                            foundLeg = leg;
-                        } else if (leg != foundLeg) {
-                            foundLeg = -1;
-                        }
-                    } else {
-                        accepted++;
-                        if (leg == foundLeg) {
-                            cellsAvoided++;
-                        }
+        void afterStep(SimulatedRoq roq) {
+            Value verdict = value(roq, "Probing/probe verdict");
+            if (verdict != null && verdict.length() == 3 && (long) verdict.element(2) != lastAttempt
+                    && verdict.element(2) > 0) {
+                lastAttempt = (long) verdict.element(2);
+                int leg = (int) verdict.element(0);
+                if (leg == foundLeg) {
+                    cellsRetried++;
+                }
+                if (verdict.element(1) < 0) {
+                    rejected++;
+                    if (lastAttempt == brokeDuringAttempt) {
+                        cellsFoundByProbe++;
+                        foundLeg = leg;
+                    } else if (leg != foundLeg) {
                         foundLeg = -1;
                     }
+                } else {
+                    accepted++;
+                    if (leg == foundLeg) {
+                        cellsAvoided++;
+                    }
+                    foundLeg = -1;
                 }
-                int probeBroken = meter.probeBroken();
-                meter.sample(bridge.lastSnapshot(), net);
-                if (meter.probeBroken() > probeBroken) {
-                    brokeDuringAttempt = (long) value(net, "gait phase", "main").element(2); // under the pressing foot
-                }
-                fallen |= value(net, "fallen", "main").asBoolean();
             }
-            return new Run(bridge.lastSnapshot().groundTruthBodyPosition(0) - x0, fallen, rejected, accepted,
-                    meter.probeBroken() + meter.loadedBreakthroughs(), meter.loadedBreakthroughs(), count(net, "fragile found"), count(net, "fragile avoided"), cellsFoundByProbe,
-                    cellsRetried, cellsAvoided);
+            int nowBroken = roq.measures().probeBroken();
+            if (nowBroken > probeBroken) {
+                brokeDuringAttempt = (long) roq.network().value("gait phase").element(2); // under the pressing foot
+            }
+            probeBroken = nowBroken;
+        }
+    }
+
+    static Run run(String course, int seconds, String... unloaded) {
+        return run(CourseSpec.parse(course), seconds, unloaded);
+    }
+
+    static Run run(Course course, int seconds, String... unloaded) {
+        try (SimulatedRoq roq = SimulatedRoq.builder().network(RUBBLE).course(course).withoutNoise().unload(unloaded)
+                .start()) {
+            ProbeLog log = new ProbeLog();
+            roq.afterEachStep(log::afterStep);
+            roq.runFor(Duration.ofSeconds(seconds));
+            RoqMeasures m = roq.measures();
+            return new Run(m.distance(), m.fallen(), log.rejected, log.accepted,
+                    m.probeBroken() + m.loadedBreakthroughs(), m.loadedBreakthroughs(),
+                    count(roq, "Probing/fragile found"), count(roq, "Probing/fragile avoided"), log.cellsFoundByProbe,
+                    log.cellsRetried, log.cellsAvoided);
         }
     }
 
     /** A Probing counter, -1 when module Probing is not loaded. */
-    private static long count(RuntimeNetwork net, String node) {
-        Value v = value(net, node, "Probing");
+    private static long count(SimulatedRoq roq, String node) {
+        Value v = value(roq, node);
         return v == null ? -1 : Math.round(v.asDouble());
     }
 
-    private static Value value(RuntimeNetwork net, String node, String module) {
+    /** A Data's value, null when its module is not loaded. */
+    private static Value value(SimulatedRoq roq, String node) {
         try {
-            return net.controller().value(NodeRef.parse(node, module));
+            return roq.network().value(node);
         } catch (RuntimeException notLoaded) {
             return null;
         }
@@ -132,7 +135,7 @@ class RoqRubbleTest {
     }
 
     @Test
-    void shouldFindAndAvoidAFragileCellOnTheCrossingWithoutFalling() throws Exception {
+    void shouldFindAndAvoidAFragileCellOnTheCrossingWithoutFalling() {
         Run r = run("crossing", 100);
         assertThat(r.fallen()).as("fallen").isFalse();
         // how far it walks is RoqCoursesTest's, across seeds and with noise, with margin below the measured median
@@ -144,14 +147,14 @@ class RoqRubbleTest {
                 + r.broken() + " broken, " + r.brokenWhileLoaded() + " of them under a loaded foot)")
                 .isGreaterThanOrEqualTo(1);
         // whether that shorter step holds is the ground's: on this run (module Posture levelling the body) the one
-        // cell found was followed by two shorter steps onto its pit's edge, both rejected, and the gait stepped on
-        // the third (docs/roq-networks.md, session 6); the network's own count above saw others avoided
+        // cell found is followed by two shorter steps onto its pit's edge, both rejected, and the gait steps on the
+        // third; the network's own count above saw others avoided
         assertThat(r.cellsRetried()).as("of those, replaced by the same leg's next, shorter step (" + r.cellsAvoided()
                 + " of them accepted)").isGreaterThanOrEqualTo(1);
     }
 
     @Test
-    void shouldAcceptEveryFootholdOnFlatGroundAndWalkOn() throws Exception {
+    void shouldAcceptEveryFootholdOnFlatGroundAndWalkOn() {
         Run r = run(Course.flat(), 30);
         assertThat(r.rejected()).as("footholds rejected on solid flat ground").isZero();
         assertThat(r.accepted()).as("footholds probed and accepted in 30 s (each probe pauses the gait)").isGreaterThanOrEqualTo(10);
@@ -160,7 +163,7 @@ class RoqRubbleTest {
     }
 
     @Test
-    void shouldRejectAFootholdOnAFragileCellSoThatOnlyTheProbeBreaksIt() throws Exception {
+    void shouldRejectAFootholdOnAFragileCellSoThatOnlyTheProbeBreaksIt() {
         Run r = run(cellUnderTheFirstFoothold(), 20);
         assertThat(r.rejected()).as("footholds rejected by probing").isGreaterThanOrEqualTo(1);
         assertThat(r.broken()).as("the cell gave way under the probe").isEqualTo(1);
@@ -170,14 +173,14 @@ class RoqRubbleTest {
     }
 
     @Test
-    void shouldBreakTheCellUnderTheFirstFootholdWhenModuleProbingIsUnloaded() throws Exception {
+    void shouldBreakTheCellUnderTheFirstFootholdWhenModuleProbingIsUnloaded() {
         Run r = run(cellUnderTheFirstFoothold(), 20, "Probing");
         assertThat(r.rejected()).isZero();
         assertThat(r.brokenWhileLoaded()).as("cells broken under a loaded foot").isEqualTo(1);
     }
 
     @Test
-    void shouldBreakThroughAFragileCellWhenModuleProbingIsUnloaded() throws Exception {
+    void shouldBreakThroughAFragileCellWhenModuleProbingIsUnloaded() {
         Run r = run("crossing", 60, "Probing");
         assertThat(r.rejected()).isZero();
         assertThat(r.brokenWhileLoaded()).as("cells broken under a loaded foot").isGreaterThanOrEqualTo(1);

@@ -1,86 +1,68 @@
-package org.fdnet.roq.bridge;
+package org.fdnet.roq.testkit.suites;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.file.Path;
-import org.fdnet.netinfo.NodeRef;
-import org.fdnet.netinfo.xml.NetworkRepository;
-import org.fdnet.roq.sim.Course;
-import org.fdnet.roq.sim.RoqSimulator;
-import org.fdnet.roq.sim.SimMode;
-import org.fdnet.runtime.engine.DrivenClock;
-import org.fdnet.runtime.engine.RuntimeNetwork;
-import org.fdnet.runtime.engine.RuntimeOptions;
+import java.time.Duration;
+import org.fdnet.roq.testkit.Roq;
+import org.fdnet.roq.testkit.RoqTest;
+import org.fdnet.roq.testkit.SimulatedRoq;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
-/** networks/roq-walk.fdn on the simulated RoQ, stepped, flat ground. */
+/** networks/roq-walk.fdn on the simulated RoQ, flat ground, sensor noise off: it walks, stops when held, repeats. */
+@RoqTest
 @Timeout(120)
 class RoqWalkTest {
-    private static final Path WALK = Path.of("..", "networks", "roq-walk.fdn");
+    private static final String WALK = "../../networks/roq-walk.fdn";
 
-    private static RuntimeNetwork start() throws Exception {
-        return RuntimeNetwork.start(NetworkRepository.load(WALK), RuntimeOptions.defaults().drivenClock(new DrivenClock(0)));
-    }
-
-    private static double x(SimBridge b) {
-        return b.lastSnapshot().groundTruthBodyPosition(0);
-    }
-
-    private static boolean fallen(RuntimeNetwork net) {
-        return net.controller().value(NodeRef.parse("fallen", "main")).asBoolean();
+    private static double x(SimulatedRoq roq) {
+        return roq.snapshot().groundTruthBodyPosition(0);
     }
 
     @Test
-    void shouldWalkAtLeastOneMetreInSixtySecondsOnFlatGroundWithoutFalling() throws Exception {
-        try (RoqSimulator sim = RoqSimulator.open(Course.flat(), SimMode.STEPPED); RuntimeNetwork net = start()) {
-            SimBridge bridge = SimBridge.stepped(net, sim, 0, 1);
-            bridge.run(1);
-            double x0 = x(bridge);
-            bridge.run(60_000);
-            assertThat(fallen(net)).isFalse();
-            assertThat(x(bridge) - x0).as("metres walked forward").isGreaterThanOrEqualTo(1.0);
-            assertThat(Math.abs(bridge.lastSnapshot().roll())).isLessThan(0.1);
-            assertThat(Math.abs(bridge.lastSnapshot().pitch())).isLessThan(0.1);
-        }
+    void shouldWalkAtLeastOneMetreInSixtySecondsOnFlatGroundWithoutFalling(
+            @Roq(network = WALK, sensorNoise = false) SimulatedRoq roq) {
+        roq.runFor(Duration.ofSeconds(60));
+
+        // it walks about 1.5 m; 1 m is a third below
+        roq.assertThat().noFall().walkedAtLeast(1.0);
+        // upright at the end: twice the bound RoqStandTest sets for standing still
+        assertThat(Math.abs(roq.snapshot().roll())).isLessThan(0.1);
+        assertThat(Math.abs(roq.snapshot().pitch())).isLessThan(0.1);
     }
 
     @Test
-    void shouldStopWhileGaitIsHeldAndWalkOnWhenItIsResumed() throws Exception {
-        try (RoqSimulator sim = RoqSimulator.open(Course.flat(), SimMode.STEPPED); RuntimeNetwork net = start()) {
-            SimBridge bridge = SimBridge.stepped(net, sim, 0, 1);
-            bridge.run(10_000);
-            assertThat(net.controller().hold("Gait").executed()).isTrue();
-            bridge.run(1_000);
-            double held = x(bridge);
-            bridge.run(10_000);
-            // no step (a stride is 0.15 m); Balance, closed on the soles' centre of pressure, still centres the body
-            assertThat(Math.abs(x(bridge) - held)).as("metres moved in 10 s with Gait held").isLessThan(0.05);
-            assertThat(net.controller().resume("Gait").executed()).isTrue();
-            double resumed = x(bridge);
-            bridge.run(15_000);
-            assertThat(x(bridge) - resumed).as("metres walked in 15 s after resuming (measured 0.17)").isGreaterThan(0.1);
-            assertThat(fallen(net)).isFalse();
-        }
+    void shouldStopWhileGaitIsHeldAndWalkOnWhenItIsResumed(@Roq(network = WALK, sensorNoise = false) SimulatedRoq roq) {
+        roq.runFor(Duration.ofSeconds(10));
+        assertThat(roq.network().controller().hold("Gait").executed()).isTrue();
+        roq.runFor(Duration.ofSeconds(1));
+        double held = x(roq);
+
+        roq.runFor(Duration.ofSeconds(10));
+
+        // no step (a stride is 0.15 m); Balance, closed on the soles' centre of pressure, still centres the body
+        assertThat(Math.abs(x(roq) - held)).as("metres moved in 10 s with Gait held").isLessThan(0.05);
+        assertThat(roq.network().controller().resume("Gait").executed()).isTrue();
+        double resumed = x(roq);
+        roq.runFor(Duration.ofSeconds(15));
+        assertThat(x(roq) - resumed).as("metres walked in 15 s after resuming (measured 0.17)").isGreaterThan(0.1);
+        roq.assertThat().noFall();
     }
 
     @Test
-    void shouldGiveTheSameEventLogForTwoSteppedRunsOfTheSameNetworkAndCourse() throws Exception {
-        assertThat(steppedEventLogHash()).isEqualTo(steppedEventLogHash());
+    void shouldGiveTheSameEventLogAndStateForTwoRunsOfTheSameNetworkAndCourse() {
+        String[] first = eventLogAndStateAfterThreeSeconds();
+        String[] second = eventLogAndStateAfterThreeSeconds();
+
+        assertThat(second).containsExactly(first);
     }
 
-    private static String steppedEventLogHash() throws Exception {
-        org.fdnet.event.MemoryEventSink sink = new org.fdnet.event.MemoryEventSink();
-        try (RoqSimulator sim = RoqSimulator.open(Course.flat(), SimMode.STEPPED);
-             RuntimeNetwork net = RuntimeNetwork.start(NetworkRepository.load(WALK),
-                     RuntimeOptions.defaults().drivenClock(new DrivenClock(1_000_000_000_000L)).sink(sink))) {
-            SimBridge.stepped(net, sim, 1_000_000_000_000L, 1).run(3_000);
+    private static String[] eventLogAndStateAfterThreeSeconds() {
+        try (SimulatedRoq roq = SimulatedRoq.builder().network(Path.of(WALK)).course("flat").withoutNoise().start()) {
+            roq.runFor(Duration.ofSeconds(3));
+            assertThat(roq.network().events()).hasSizeGreaterThan(3_000);
+            return new String[] {roq.eventLogHash(), roq.stateHash()};
         }
-        java.security.MessageDigest sha = java.security.MessageDigest.getInstance("SHA-256");
-        assertThat(sink.size()).isGreaterThan(3_000);
-        for (org.fdnet.event.NetworkEvent e : sink.events()) {
-            sha.update(e.toString().getBytes(java.nio.charset.StandardCharsets.UTF_8));
-        }
-        return java.util.HexFormat.of().formatHex(sha.digest());
     }
 }

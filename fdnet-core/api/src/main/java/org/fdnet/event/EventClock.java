@@ -20,12 +20,20 @@ public final class EventClock {
         this(EventClock::wallMicros);
     }
 
-    /** A clock on {@code microsSource} (µs since the epoch), e.g. a simulated time. */
+    /**
+     * A clock on {@code microsSource} (µs since the epoch), e.g. a simulated time.
+     *
+     * @param microsSource the time source, µs since the epoch; read on every {@link #next()}
+     */
     public EventClock(LongSupplier microsSource) {
         this.source = java.util.Objects.requireNonNull(microsSource, "microsSource");
     }
 
-    /** The next time: {@code max(now, previous + 1)}. Lock-free. */
+    /**
+     * The next time: {@code max(now, previous + 1)}. Lock-free.
+     *
+     * @return µs since the epoch, above every time this clock gave before
+     */
     public long next() {
         long now = source.getAsLong();
         while (true) {

@@ -6,6 +6,11 @@ package org.fdnet.event;
  * for a full or absent consumer (a sink that cannot keep an event counts and reports the loss).
  */
 public interface EventSink extends AutoCloseable {
+    /**
+     * Takes one event; called in each source's time order, possibly from several threads.
+     *
+     * @param event the event, never null
+     */
     void accept(NetworkEvent event);
 
     /** Delivers or persists what is buffered; default: nothing is buffered. */
@@ -16,7 +21,13 @@ public interface EventSink extends AutoCloseable {
     default void close() {
     }
 
-    /** One sink feeding two, in that order. */
+    /**
+     * One sink feeding two, in that order.
+     *
+     * @param first  gets each event first
+     * @param second gets it next
+     * @return a sink whose {@code accept} and {@code flush} go to both; its {@code close} closes neither
+     */
     static EventSink both(EventSink first, EventSink second) {
         return new EventSink() {
             @Override

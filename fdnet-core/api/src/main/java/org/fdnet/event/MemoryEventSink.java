@@ -12,11 +12,22 @@ public final class MemoryEventSink implements EventSink {
         events.add(event);
     }
 
-    /** A copy of what arrived so far. */
+    /**
+     * A copy of what arrived so far.
+     *
+     * @return a new list, in arrival order
+     */
     public synchronized List<NetworkEvent> events() {
         return new ArrayList<>(events);
     }
 
+    /**
+     * The events of one type that arrived so far.
+     *
+     * @param <T>  the event type
+     * @param type e.g. {@code DataValueEvent.class}
+     * @return a new list, in arrival order
+     */
     public synchronized <T extends NetworkEvent> List<T> events(Class<T> type) {
         List<T> result = new ArrayList<>();
         for (NetworkEvent e : events) {
@@ -27,6 +38,11 @@ public final class MemoryEventSink implements EventSink {
         return result;
     }
 
+    /**
+     * How many events arrived.
+     *
+     * @return the count so far
+     */
     public synchronized int size() {
         return events.size();
     }

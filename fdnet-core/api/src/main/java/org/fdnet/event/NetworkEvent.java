@@ -9,9 +9,17 @@ package org.fdnet.event;
 public sealed interface NetworkEvent
         permits DataValueEvent, RelationValueEvent, NetworkCommandEvent, NodeNamedEvent {
 
-    /** The node (or, for commands, the node or controller) that produced the event. */
+    /**
+     * The node (or, for commands, the node or controller) that produced the event.
+     *
+     * @return the node id, unique within one run of one core; 0 for the controller
+     */
     int sourceId();
 
-    /** Microseconds since the epoch; strictly increasing per source (see {@link EventClock}). */
+    /**
+     * Microseconds since the epoch; strictly increasing per source (see {@link EventClock}).
+     *
+     * @return when it happened
+     */
     long time();
 }

@@ -14,9 +14,27 @@ import java.util.UUID;
  * started (µs since the epoch) and the hosts it runs on. The coordinator hands it to every host at deployment;
  * each host's events are recorded under it, so one network run is one run in the logger however many
  * processes record it.
+ *
+ * @param id            the run's id, random
+ * @param network       the network's name
+ * @param definition    the {@code .fdn} text as deployed
+ * @param sha256        the hexadecimal SHA-256 of {@code definition}'s UTF-8 bytes
+ * @param startedMicros when the run started, µs since the epoch
+ * @param hosts         the hosts it runs on
  */
 public record RunIdentity(UUID id, String network, String definition, String sha256, long startedMicros,
                           List<String> hosts) {
+    /**
+     * Checks the parts and copies the hosts.
+     *
+     * @param id            the run's id
+     * @param network       the network's name
+     * @param definition    the {@code .fdn} text as deployed
+     * @param sha256        that text's SHA-256, hexadecimal
+     * @param startedMicros when the run started, µs since the epoch
+     * @param hosts         the hosts it runs on, copied
+     * @throws NullPointerException when a part is null
+     */
     public RunIdentity {
         Objects.requireNonNull(id, "id");
         Objects.requireNonNull(network, "network");
@@ -25,13 +43,25 @@ public record RunIdentity(UUID id, String network, String definition, String sha
         hosts = List.copyOf(hosts);
     }
 
-    /** A new run of {@code network}, started now, whose definition is {@code definitionText}. */
+    /**
+     * A new run of {@code network}, started now, whose definition is {@code definitionText}.
+     *
+     * @param network        the network's name
+     * @param definitionText the {@code .fdn} text being deployed
+     * @param hosts          the hosts it runs on
+     * @return a run with a fresh random id and the wall clock's time
+     */
     public static RunIdentity start(String network, String definitionText, List<String> hosts) {
         return new RunIdentity(UUID.randomUUID(), network, definitionText, sha256Of(definitionText),
                 System.currentTimeMillis() * 1000, hosts);
     }
 
-    /** The hexadecimal SHA-256 of {@code text}'s UTF-8 bytes. */
+    /**
+     * The hexadecimal SHA-256 of {@code text}'s UTF-8 bytes.
+     *
+     * @param text any text
+     * @return 64 lower-case hexadecimal digits
+     */
     public static String sha256Of(String text) {
         try {
             return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256")

@@ -32,36 +32,82 @@ public final class TypedValue {
         this.ref = ref;
     }
 
+    /**
+     * A BOOLEAN value.
+     *
+     * @param b the payload
+     * @return one of two shared instances
+     */
     public static TypedValue of(boolean b) {
         return b ? TRUE : FALSE;
     }
 
+    /**
+     * A LONG value.
+     *
+     * @param l the payload
+     * @return a value of type {@link ValueType#LONG}
+     */
     public static TypedValue of(long l) {
         return new TypedValue(ValueType.LONG, l, null);
     }
 
+    /**
+     * A DOUBLE value.
+     *
+     * @param d the payload; every NaN is kept as the one canonical NaN
+     * @return a value of type {@link ValueType#DOUBLE}
+     */
     public static TypedValue of(double d) {
         return new TypedValue(ValueType.DOUBLE, Double.doubleToLongBits(d), null); // one NaN, as Double.equals has
     }
 
+    /**
+     * A STRING value.
+     *
+     * @param s the payload, not null
+     * @return a value of type {@link ValueType#STRING}
+     */
     public static TypedValue of(String s) {
         return new TypedValue(ValueType.STRING, 0, Objects.requireNonNull(s, "string value"));
     }
 
+    /**
+     * A BYTES value.
+     *
+     * @param bytes the payload, copied
+     * @return a value of type {@link ValueType#BYTES}
+     */
     public static TypedValue ofBytes(byte[] bytes) {
         return new TypedValue(ValueType.BYTES, 0, bytes.clone());
     }
 
+    /**
+     * A DOUBLES value.
+     *
+     * @param values the elements, copied
+     * @return a value of type {@link ValueType#DOUBLES}
+     */
     public static TypedValue ofDoubles(double... values) {
         return new TypedValue(ValueType.DOUBLES, 0, values.clone());
     }
 
-    /** Takes ownership of {@code values} without copying: the caller never touches the array again. */
+    /**
+     * Takes ownership of {@code values} without copying: the caller never touches the array again.
+     *
+     * @param values the elements, kept as they are
+     * @return a value of type {@link ValueType#DOUBLES}
+     */
     public static TypedValue ownDoubles(double[] values) {
         return new TypedValue(ValueType.DOUBLES, 0, Objects.requireNonNull(values, "values"));
     }
 
-    /** Takes ownership of {@code bytes} without copying: for decoders that made the array themselves. */
+    /**
+     * Takes ownership of {@code bytes} without copying: for decoders that made the array themselves.
+     *
+     * @param bytes the payload, kept as it is
+     * @return a value of type {@link ValueType#BYTES}
+     */
     public static TypedValue ownBytes(byte[] bytes) {
         return new TypedValue(ValueType.BYTES, 0, Objects.requireNonNull(bytes, "bytes"));
     }
@@ -69,6 +115,9 @@ public final class TypedValue {
     /**
      * Parses the text form ({@link #text()}, or a parameter's form) of a value of {@code type}.
      *
+     * @param type the type the text is read as
+     * @param text the text form; surrounding white space is ignored except for a STRING
+     * @return a value of {@code type}
      * @throws IllegalArgumentException naming the text and the expected form
      */
     public static TypedValue parse(ValueType type, String text) {
@@ -83,7 +132,12 @@ public final class TypedValue {
         };
     }
 
-    /** The parameter type whose text form is this value type's. */
+    /**
+     * The parameter type whose text form is this value type's.
+     *
+     * @param type a value type
+     * @return the parameter type of the same name
+     */
     public static ParameterType parameterType(ValueType type) {
         return switch (type) {
             case BOOLEAN -> ParameterType.BOOLEAN;
@@ -95,16 +149,30 @@ public final class TypedValue {
         };
     }
 
+    /**
+     * The value's type, which decides which accessor may be called.
+     *
+     * @return the type fixed when the value was made
+     */
     public ValueType type() {
         return type;
     }
 
-    /** Whether {@link #number()} holds the value: a {@code LONG} or a {@code DOUBLE} (what a plot draws as one line). */
+    /**
+     * Whether {@link #number()} holds the value: a {@code LONG} or a {@code DOUBLE} (what a plot draws as one line).
+     *
+     * @return true for LONG and DOUBLE
+     */
     public boolean isNumber() {
         return type == ValueType.LONG || type == ValueType.DOUBLE;
     }
 
-    /** A {@code LONG} or {@code DOUBLE} as a double; an IllegalStateException for any other type. */
+    /**
+     * A {@code LONG} or {@code DOUBLE} as a double; an IllegalStateException for any other type.
+     *
+     * @return the number (a LONG beyond 2^53 loses precision)
+     * @throws IllegalStateException when the value is not a number
+     */
     public double number() {
         return switch (type) {
             case DOUBLE -> Double.longBitsToDouble(bits);
@@ -113,39 +181,77 @@ public final class TypedValue {
         };
     }
 
+    /**
+     * The payload of a {@code BOOLEAN} value.
+     *
+     * @return the truth value
+     * @throws IllegalStateException for any other type
+     */
     public boolean booleanValue() {
         expect(ValueType.BOOLEAN);
         return bits != 0;
     }
 
+    /**
+     * The payload of a {@code LONG} value.
+     *
+     * @return the whole number, exact
+     * @throws IllegalStateException for any other type
+     */
     public long longValue() {
         expect(ValueType.LONG);
         return bits;
     }
 
+    /**
+     * The payload of a {@code DOUBLE} value.
+     *
+     * @return the number, NaN and infinities included
+     * @throws IllegalStateException for any other type
+     */
     public double doubleValue() {
         expect(ValueType.DOUBLE);
         return Double.longBitsToDouble(bits);
     }
 
+    /**
+     * The payload of a {@code STRING} value.
+     *
+     * @return the text, never null
+     * @throws IllegalStateException for any other type
+     */
     public String stringValue() {
         expect(ValueType.STRING);
         return (String) ref;
     }
 
-    /** A copy of a {@code BYTES} value. */
+    /**
+     * A copy of a {@code BYTES} value.
+     *
+     * @return a new array the caller may change
+     * @throws IllegalStateException for any other type
+     */
     public byte[] bytes() {
         expect(ValueType.BYTES);
         return ((byte[]) ref).clone();
     }
 
-    /** A copy of a {@code DOUBLES} value. */
+    /**
+     * A copy of a {@code DOUBLES} value.
+     *
+     * @return a new array the caller may change
+     * @throws IllegalStateException for any other type
+     */
     public double[] doubles() {
         expect(ValueType.DOUBLES);
         return ((double[]) ref).clone();
     }
 
-    /** Elements of a {@code DOUBLES} value, bytes of a {@code BYTES} value, 1 for any other. */
+    /**
+     * Elements of a {@code DOUBLES} value, bytes of a {@code BYTES} value, 1 for any other.
+     *
+     * @return the number of elements or bytes; 1 for a boolean, a number or a string
+     */
     public int length() {
         return switch (type) {
             case DOUBLES -> ((double[]) ref).length;
@@ -154,13 +260,27 @@ public final class TypedValue {
         };
     }
 
-    /** Element {@code i} of a {@code DOUBLES} value, without copying the vector. */
+    /**
+     * Element {@code i} of a {@code DOUBLES} value, without copying the vector.
+     *
+     * @param i from 0 to {@link #length()} minus one
+     * @return the element's value
+     * @throws IllegalStateException for any other type
+     * @throws IndexOutOfBoundsException when {@code i} is outside the vector
+     */
     public double element(int i) {
         expect(ValueType.DOUBLES);
         return ((double[]) ref)[i];
     }
 
-    /** Byte {@code i} of a {@code BYTES} value, without copying them. */
+    /**
+     * Byte {@code i} of a {@code BYTES} value, without copying them.
+     *
+     * @param i from 0 to {@link #length()} minus one
+     * @return the byte, signed as Java's {@code byte} is
+     * @throws IllegalStateException for any other type
+     * @throws IndexOutOfBoundsException when {@code i} is outside the bytes
+     */
     public byte byteAt(int i) {
         expect(ValueType.BYTES);
         return ((byte[]) ref)[i];
@@ -169,6 +289,8 @@ public final class TypedValue {
     /**
      * The text form: {@code true}, {@code 42}, {@code 0.5} ({@code Double.toString}), the string, Base64 for
      * bytes, comma-separated doubles for vectors. Made on each call: callers outside the hot paths only.
+     *
+     * @return the text form, which {@link #parse} reads back to an equal value (except a NaN, which it refuses)
      */
     public String text() {
         return switch (type) {

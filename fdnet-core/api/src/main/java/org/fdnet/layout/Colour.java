@@ -9,7 +9,13 @@ public final class Colour {
     private Colour() {
     }
 
-    /** Checks {@code colour} (which may be {@code null}: no colour). */
+    /**
+     * Checks {@code colour} (which may be {@code null}: no colour).
+     *
+     * @param colour {@code #RRGGBB} (hexadecimal, either case), or null
+     * @return {@code colour} itself, so a setter can check and store in one expression
+     * @throws IllegalArgumentException when it is not null and not of the form {@code #RRGGBB}
+     */
     public static String check(String colour) {
         if (colour != null && !HEX.matcher(colour).matches()) {
             throw new IllegalArgumentException("colour '" + colour + "' is not of the form #RRGGBB");

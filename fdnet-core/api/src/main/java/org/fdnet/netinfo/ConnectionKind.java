@@ -15,10 +15,20 @@ public enum ConnectionKind {
         this.element = element;
     }
 
+    /**
+     * The word users read in messages and the editor.
+     *
+     * @return {@code Reader} or {@code Writer}
+     */
     public String label() {
         return label;
     }
 
+    /**
+     * The XML element of a {@code .fdn} file that declares such a connection.
+     *
+     * @return {@code read} or {@code write}
+     */
     public String element() {
         return element;
     }

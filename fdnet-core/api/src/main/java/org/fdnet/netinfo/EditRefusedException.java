@@ -7,6 +7,11 @@ package org.fdnet.netinfo;
 public class EditRefusedException extends RuntimeException {
     private static final long serialVersionUID = 1L;
 
+    /**
+     * A refusal.
+     *
+     * @param message why, naming the module, node or connection, as a user reads it
+     */
     public EditRefusedException(String message) {
         super(message);
     }

@@ -8,7 +8,13 @@ public final class ModelRules {
     private ModelRules() {
     }
 
-    /** Module and node names: not blank, no '/', no surrounding white space. */
+    /**
+     * Module and node names: not blank, no '/', no control characters, no surrounding white space.
+     *
+     * @param what the kind of name for the message: {@code module} or {@code node}
+     * @param name the name to check, may be null
+     * @throws EditRefusedException when the name breaks a rule, saying which
+     */
     public static void checkName(String what, String name) {
         if (name == null || name.isBlank()) {
             throw new EditRefusedException(what + " name may not be empty");
@@ -27,6 +33,9 @@ public final class ModelRules {
     /**
      * A module's path: names separated by '/', each a valid module name ({@code Arm} or {@code Arm/Hand}); no
      * module lies inside {@code main}, whose place is the top of the network.
+     *
+     * @param path the module's full name, may be null
+     * @throws EditRefusedException when the path breaks a rule, saying which
      */
     public static void checkModulePath(String path) {
         if (path == null || path.isBlank()) {
@@ -49,6 +58,12 @@ public final class ModelRules {
         return false;
     }
 
+    /**
+     * A node has a valid name and names a class.
+     *
+     * @param node the node's definition
+     * @throws EditRefusedException when the name is invalid or the class name blank
+     */
     public static void checkNode(NodeInfo node) {
         checkName("node", node.name());
         if (node.className().isBlank()) {
@@ -56,7 +71,13 @@ public final class ModelRules {
         }
     }
 
-    /** A connection must join an existing Data (its data end) and an existing Relation (its relation end). */
+    /**
+     * A connection must join an existing Data (its data end) and an existing Relation (its relation end).
+     *
+     * @param network the network the connection is to join
+     * @param c       the connection
+     * @throws EditRefusedException when an end's module or node is missing or of the wrong kind
+     */
     public static void checkConnectionEnds(NetworkInfo network, ConnectionInfo c) {
         checkEnd(network, c, c.data(), NodeKind.DATA);
         checkEnd(network, c, c.relation(), NodeKind.RELATION);

@@ -35,21 +35,38 @@ public final class ModuleInfo {
         return copy;
     }
 
-    /** The module's path: its own name, below its parents' ({@code Arm/Hand}); a top-level module's is its name. */
+    /**
+     * The module's path: its own name, below its parents' ({@code Arm/Hand}); a top-level module's is its name.
+     *
+     * @return the full name
+     */
     public String name() {
         return name;
     }
 
-    /** The last part of the path: the name the file gives the module. */
+    /**
+     * The last part of the path: the name the file gives the module.
+     *
+     * @return the module's own name, e.g. {@code Hand} for {@code Arm/Hand}
+     */
     public String localName() {
         return name.substring(name.lastIndexOf('/') + 1);
     }
 
-    /** The enclosing module's path, or {@code null} for a top-level module (and {@code main}). */
+    /**
+     * The enclosing module's path, or {@code null} for a top-level module (and {@code main}).
+     *
+     * @return the parent's full name, or null
+     */
     public String parentName() {
         return ModuleTree.parentOf(name);
     }
 
+    /**
+     * Whether this is {@code main}, the module of the top-level nodes.
+     *
+     * @return true for {@code main}
+     */
     public boolean isMain() {
         return MAIN.equals(name);
     }
@@ -57,28 +74,57 @@ public final class ModuleInfo {
     /**
      * Whether the module is loaded when the network starts; {@code main} always is. For a nested module: whether it
      * is loaded with its parent (so at start only when its parent is too, see {@link ModuleTree#atStart}).
+     *
+     * @return the {@code loadatstart} flag, true for {@code main}
      */
     public boolean loadAtStart() {
         return loadAtStart || isMain();
     }
 
+    /**
+     * The module's own nodes (not those of modules inside it), in declaration order.
+     *
+     * @return an unmodifiable live view
+     */
     public Collection<NodeInfo> nodes() {
         return Collections.unmodifiableCollection(nodes.values());
     }
 
+    /**
+     * The node called {@code nodeName} in this module.
+     *
+     * @param nodeName the node's name, without the module
+     * @return its definition, or null when the module has none of that name
+     */
     public NodeInfo node(String nodeName) {
         return nodes.get(nodeName);
     }
 
+    /**
+     * Whether this module has a node called {@code nodeName}.
+     *
+     * @param nodeName the node's name, without the module
+     * @return true when {@link #node} would find it
+     */
     public boolean hasNode(String nodeName) {
         return nodes.containsKey(nodeName);
     }
 
+    /**
+     * The connections this module declares, in declaration order; their ends may lie in other modules.
+     *
+     * @return an unmodifiable live view
+     */
     public List<ConnectionInfo> connections() {
         return Collections.unmodifiableList(connections);
     }
 
-    /** The connections this module declares that touch {@code ref} (see {@link NetworkInfo#connectionsOf} for all). */
+    /**
+     * The connections this module declares that touch {@code ref} (see {@link NetworkInfo#connectionsOf} for all).
+     *
+     * @param ref a node of any module
+     * @return a new list, in declaration order
+     */
     public List<ConnectionInfo> connectionsOf(NodeRef ref) {
         List<ConnectionInfo> result = new ArrayList<>();
         for (ConnectionInfo c : connections) {
@@ -89,6 +135,11 @@ public final class ModuleInfo {
         return result;
     }
 
+    /**
+     * This module in numbers: its own nodes and the connections it declares.
+     *
+     * @return its Datas, Relations, Readers and Writers
+     */
     public ModuleCounts counts() {
         int datas = 0;
         for (NodeInfo n : nodes.values()) {

@@ -15,18 +15,35 @@ public final class ModuleTree {
     private ModuleTree() {
     }
 
-    /** The enclosing module of {@code path}, or {@code null} when it is a top-level module. */
+    /**
+     * The enclosing module of {@code path}, or {@code null} when it is a top-level module.
+     *
+     * @param path a module's full name, e.g. {@code Arm/Hand}
+     * @return the parent's full name ({@code Arm}), or null
+     */
     public static String parentOf(String path) {
         int slash = path.lastIndexOf('/');
         return slash < 0 ? null : path.substring(0, slash);
     }
 
-    /** Whether {@code path} is {@code ancestor} or a module below it. */
+    /**
+     * Whether {@code path} is {@code ancestor} or a module below it.
+     *
+     * @param path     a module's full name
+     * @param ancestor another module's full name
+     * @return true when {@code path} equals {@code ancestor} or starts with {@code ancestor/}
+     */
     public static boolean within(String path, String ancestor) {
         return path.equals(ancestor) || path.startsWith(ancestor + "/");
     }
 
-    /** The modules directly below {@code path}, in declaration order. */
+    /**
+     * The modules directly below {@code path}, in declaration order.
+     *
+     * @param network the network whose modules are looked at
+     * @param path    a module's full name
+     * @return a new list, empty when it has no children
+     */
     public static List<ModuleInfo> children(NetworkInfo network, String path) {
         List<ModuleInfo> children = new ArrayList<>();
         for (ModuleInfo m : network.modules()) {
@@ -37,7 +54,13 @@ public final class ModuleTree {
         return children;
     }
 
-    /** {@code path} and every module below it, parents before children. */
+    /**
+     * {@code path} and every module below it, parents before children.
+     *
+     * @param network the network whose modules are looked at
+     * @param path    a module's full name
+     * @return a new list of full names, in declaration order; empty when the network has no such module
+     */
     public static List<String> subtree(NetworkInfo network, String path) {
         List<String> subtree = new ArrayList<>();
         for (ModuleInfo m : network.modules()) {
@@ -48,7 +71,12 @@ public final class ModuleTree {
         return subtree;
     }
 
-    /** The modules a network loads when it starts, parents before children. */
+    /**
+     * The modules a network loads when it starts, parents before children.
+     *
+     * @param network the network whose modules are looked at
+     * @return a new set of full names, {@code main} included
+     */
     public static Set<String> atStart(NetworkInfo network) {
         Set<String> loaded = new LinkedHashSet<>();
         for (ModuleInfo m : network.modules()) {
@@ -64,6 +92,10 @@ public final class ModuleTree {
      * The modules that load when {@code module} is loaded on top of {@code loaded}: the module and, below it, its
      * children marked {@code loadatstart}, recursively. The module's own parent must be loaded (else the result is
      * empty: see {@link #whyNotLoadable}).
+     *
+     * @param network the network whose modules are looked at
+     * @param module  the module to load
+     * @return a new set of full names, {@code module} first
      */
     public static Set<String> loadedWith(NetworkInfo network, String module) {
         Set<String> added = new LinkedHashSet<>();
@@ -77,7 +109,14 @@ public final class ModuleTree {
         return added;
     }
 
-    /** The reason {@code module} cannot be loaded on top of {@code loaded}, or {@code null} when it can. */
+    /**
+     * The reason {@code module} cannot be loaded on top of {@code loaded}, or {@code null} when it can.
+     *
+     * @param network the network whose modules are looked at
+     * @param loaded  the modules running now
+     * @param module  the module to load
+     * @return a message naming the module (unknown, already loaded, or its parent not loaded), or null
+     */
     public static String whyNotLoadable(NetworkInfo network, Set<String> loaded, String module) {
         if (network.module(module) == null) {
             return "the network has no module named '" + module + "'";
@@ -92,14 +131,27 @@ public final class ModuleTree {
         return null;
     }
 
-    /** {@code loaded} after loading {@code module} (and its loadatstart children). */
+    /**
+     * {@code loaded} after loading {@code module} (and its loadatstart children).
+     *
+     * @param network the network whose modules are looked at
+     * @param loaded  the modules running now; not changed
+     * @param module  the module to load
+     * @return a new set
+     */
     public static Set<String> afterLoad(NetworkInfo network, Set<String> loaded, String module) {
         Set<String> next = new LinkedHashSet<>(loaded);
         next.addAll(loadedWith(network, module));
         return next;
     }
 
-    /** {@code loaded} after unloading {@code module} and every module below it. */
+    /**
+     * {@code loaded} after unloading {@code module} and every module below it.
+     *
+     * @param loaded the modules running now; not changed
+     * @param module the module to unload
+     * @return a new set
+     */
     public static Set<String> afterUnload(Set<String> loaded, String module) {
         Set<String> next = new LinkedHashSet<>(loaded);
         next.removeIf(m -> within(m, module));

@@ -30,13 +30,21 @@ public final class NetworkInfo {
     private final List<NetworkChangeListener> listeners = new CopyOnWriteArrayList<>();
     private ConnectionIndex index;
 
-    /** An empty network with its {@code main} module. */
+    /**
+     * An empty network with its {@code main} module.
+     *
+     * @param name the network's name, or null for none
+     */
     public NetworkInfo(String name) {
         this.name = name;
         modules.put(ModuleInfo.MAIN, new ModuleInfo(ModuleInfo.MAIN, true));
     }
 
-    /** A deep copy without listeners (nodes and connections are immutable, so sharing them is safe). */
+    /**
+     * A deep copy without listeners (nodes and connections are immutable, so sharing them is safe).
+     *
+     * @return a new network equal to this one; editing either leaves the other as it is
+     */
     public NetworkInfo copy() {
         NetworkInfo copy = new NetworkInfo(name);
         copy.modules.clear();
@@ -48,23 +56,49 @@ public final class NetworkInfo {
 
     // ---------------------------------------------------------------- reading
 
-    /** The network's name, or {@code null} when the file gives none. */
+    /**
+     * The network's name, or {@code null} when the file gives none.
+     *
+     * @return the name, or null
+     */
     public String name() {
         return name;
     }
 
+    /**
+     * Every module, {@code main} included, in declaration order.
+     *
+     * @return an unmodifiable live view
+     */
     public Collection<ModuleInfo> modules() {
         return Collections.unmodifiableCollection(modules.values());
     }
 
+    /**
+     * The module called {@code moduleName}.
+     *
+     * @param moduleName its full name, a path for a nested module ({@code Arm/Hand})
+     * @return the module, or null when the network has none of that name
+     */
     public ModuleInfo module(String moduleName) {
         return modules.get(moduleName);
     }
 
+    /**
+     * The module {@code main}, which every network has.
+     *
+     * @return the main module, never null
+     */
     public ModuleInfo main() {
         return modules.get(ModuleInfo.MAIN);
     }
 
+    /**
+     * The node {@code ref} names.
+     *
+     * @param ref the node's module and name
+     * @return its definition, or null when there is no such module or node
+     */
     public NodeInfo node(NodeRef ref) {
         ModuleInfo m = modules.get(ref.module());
         return m == null ? null : m.node(ref.node());
@@ -75,6 +109,8 @@ public final class NetworkInfo {
      * (or {@code A/B/Node}) as written; a bare name is looked up in {@code contextModule}, then in each module
      * enclosing it, outwards, then in {@code main}.
      *
+     * @param contextModule the module that declares the connection
+     * @param reference     the node as the connection writes it: a bare name or a {@code Module/Node} path
      * @return the node's full name, or {@code null} when no such node exists
      */
     public NodeRef resolve(String contextModule, String reference) {
@@ -91,12 +127,23 @@ public final class NetworkInfo {
         return main().hasNode(reference) ? new NodeRef(ModuleInfo.MAIN, reference) : null;
     }
 
-    /** The shortest text that {@link #resolve} turns back into {@code ref} from {@code contextModule}. */
+    /**
+     * The shortest text that {@link #resolve} turns back into {@code ref} from {@code contextModule}.
+     *
+     * @param contextModule the module that declares the connection
+     * @param ref           the node to name
+     * @return the bare node name when that resolves to {@code ref}, else {@code Module/Node}
+     */
     public String referenceText(String contextModule, NodeRef ref) {
         return ref.equals(resolve(contextModule, ref.node())) ? ref.node() : ref.toString();
     }
 
-    /** Every connection, in any module, that has {@code ref} at one of its ends. */
+    /**
+     * Every connection, in any module, that has {@code ref} at one of its ends.
+     *
+     * @param ref the node
+     * @return an unmodifiable list, each with the module declaring it; empty for an unknown node
+     */
     public List<LinkedConnection> connectionsOf(NodeRef ref) {
         return Collections.unmodifiableList(index().connectionsOf(ref));
     }
@@ -105,12 +152,22 @@ public final class NetworkInfo {
      * Every node a value of {@code ref} can flow to: for a Data, the Relations reading it, the Datas
      * those write, and so on; for a Relation, the Datas it writes, their readers, and so on. The
      * start node belongs to the result only if it lies on a feedback loop. Breadth-first order.
+     *
+     * @param ref the node to start from
+     * @return a new set, nearest first
+     * @throws EditRefusedException when the network has no such node
      */
     public Set<NodeRef> descendants(NodeRef ref) {
         return reach(ref, true);
     }
 
-    /** Every node whose value can flow into {@code ref}: the mirror image of {@link #descendants}. */
+    /**
+     * Every node whose value can flow into {@code ref}: the mirror image of {@link #descendants}.
+     *
+     * @param ref the node to start from
+     * @return a new set, nearest first
+     * @throws EditRefusedException when the network has no such node
+     */
     public Set<NodeRef> ancestors(NodeRef ref) {
         return reach(ref, false);
     }
@@ -120,10 +177,22 @@ public final class NetworkInfo {
         return index().reach(start, down);
     }
 
+    /**
+     * How many nodes and connections one module declares (not those of the modules inside it).
+     *
+     * @param moduleName the module's full name
+     * @return its Datas, Relations, Readers and Writers
+     * @throws EditRefusedException when the network has no such module
+     */
     public ModuleCounts counts(String moduleName) {
         return requireModule(moduleName).counts();
     }
 
+    /**
+     * How many nodes and connections the whole network declares.
+     *
+     * @return the sum of every module's counts
+     */
     public ModuleCounts totalCounts() {
         ModuleCounts total = new ModuleCounts(0, 0, 0, 0);
         for (ModuleInfo m : modules.values()) {
@@ -134,22 +203,44 @@ public final class NetworkInfo {
 
     // ---------------------------------------------------------------- listeners
 
+    /**
+     * Tells {@code listener} of every completed edit from now on, on the editing thread.
+     *
+     * @param listener the listener, not null; an exception from it is logged and the edit stands
+     */
     public void addListener(NetworkChangeListener listener) {
         listeners.add(Objects.requireNonNull(listener));
     }
 
+    /**
+     * Stops telling {@code listener}.
+     *
+     * @param listener a listener added before; any other is ignored
+     */
     public void removeListener(NetworkChangeListener listener) {
         listeners.remove(listener);
     }
 
     // ---------------------------------------------------------------- network and modules
 
+    /**
+     * Renames the network.
+     *
+     * @param newName the new name, or null for none
+     */
     public void setName(String newName) {
         name = newName;
         changed(NetworkChange.Kind.NETWORK_RENAMED, null, null);
     }
 
-    /** Adds an empty module; {@code moduleName} may be a path ({@code Arm/Hand}) below an existing module. */
+    /**
+     * Adds an empty module; {@code moduleName} may be a path ({@code Arm/Hand}) below an existing module.
+     *
+     * @param moduleName  the new module's full name
+     * @param loadAtStart whether it loads when the network starts
+     * @return the new module, last in declaration order
+     * @throws EditRefusedException when the name is malformed or taken, or its parent module does not exist
+     */
     public ModuleInfo addModule(String moduleName, boolean loadAtStart) {
         checkNewModule(moduleName);
         ModuleInfo module = new ModuleInfo(moduleName, loadAtStart);
@@ -161,6 +252,13 @@ public final class NetworkInfo {
     /**
      * Adds an empty module at {@code position} in the declaration order (0 = first): what undoing a
      * module's deletion needs to give back the network exactly as it was.
+     *
+     * @param moduleName  the new module's full name
+     * @param loadAtStart whether it loads when the network starts
+     * @param position    its place among the modules, 0 to the number of modules
+     * @return the new module
+     * @throws EditRefusedException when the name is malformed or taken, its parent does not exist, or
+     *                              {@code position} is out of range
      */
     public ModuleInfo addModule(String moduleName, boolean loadAtStart, int position) {
         checkNewModule(moduleName);
@@ -196,6 +294,9 @@ public final class NetworkInfo {
     /**
      * Deletes a module, the modules inside it, their nodes, and every connection in any module that touches one of
      * them.
+     *
+     * @param moduleName the module's full name
+     * @throws EditRefusedException for {@code main} or a module the network does not have
      */
     public void deleteModule(String moduleName) {
         ModuleInfo doomed = requireModule(moduleName);
@@ -214,6 +315,11 @@ public final class NetworkInfo {
      * Renames a module; the modules inside it and connections anywhere that name their nodes follow. A nested
      * module's new name is a path with the same parent ({@code Arm/Hand} → {@code Arm/Grip}) or a plain name, which
      * keeps the parent: renaming does not move a module.
+     *
+     * @param oldName the module's full name
+     * @param newName the new name: a plain name, or a full path with the same parent
+     * @throws EditRefusedException for {@code main}, an unknown module, a malformed or taken name, or a new name
+     *                              with another parent
      */
     public void renameModule(String oldName, String newName) {
         ModuleInfo module = requireModule(oldName);
@@ -257,6 +363,13 @@ public final class NetworkInfo {
                 ? new NodeRef(newModule + ref.module().substring(oldModule.length()), ref.node()) : ref;
     }
 
+    /**
+     * Sets whether a module loads when the network starts.
+     *
+     * @param moduleName  the module's full name
+     * @param loadAtStart true to load it at start
+     * @throws EditRefusedException for an unknown module, or false for {@code main}
+     */
     public void setLoadAtStart(String moduleName, boolean loadAtStart) {
         ModuleInfo module = requireModule(moduleName);
         if (module.isMain() && !loadAtStart) {
@@ -268,6 +381,14 @@ public final class NetworkInfo {
 
     // ---------------------------------------------------------------- nodes
 
+    /**
+     * Adds a node, last among its module's nodes.
+     *
+     * @param moduleName the module's full name
+     * @param node       the node's definition
+     * @return the new node's module and name
+     * @throws EditRefusedException for an unknown module, a malformed node, or a name the module already has
+     */
     public NodeRef addNode(String moduleName, NodeInfo node) {
         ModuleInfo module = requireModule(moduleName);
         ModelRules.checkNode(node);
@@ -280,7 +401,16 @@ public final class NetworkInfo {
         return new NodeRef(moduleName, node.name());
     }
 
-    /** Adds a node at {@code position} among its module's nodes (0 = first): what undoing a deletion needs. */
+    /**
+     * Adds a node at {@code position} among its module's nodes (0 = first): what undoing a deletion needs.
+     *
+     * @param moduleName the module's full name
+     * @param node       the node's definition
+     * @param position   its place, 0 to the module's number of nodes
+     * @return the new node's module and name
+     * @throws EditRefusedException for an unknown module, a malformed node, a name the module already has, or
+     *                              {@code position} out of range
+     */
     public NodeRef addNode(String moduleName, NodeInfo node, int position) {
         ModuleInfo module = requireModule(moduleName);
         ModelRules.checkNode(node);
@@ -294,7 +424,14 @@ public final class NetworkInfo {
         return new NodeRef(moduleName, node.name());
     }
 
-    /** Changes a node's host, path, class or parameters. Its name and kind stay (rename, replace, merge for those). */
+    /**
+     * Changes a node's host, path, class or parameters. Its name and kind stay (rename, replace, merge for those).
+     *
+     * @param ref     the node
+     * @param updated its new definition, with the same name (and the same kind while it is connected)
+     * @throws EditRefusedException for an unknown node, a malformed definition, another name, or another kind of a
+     *                              connected node
+     */
     public void updateNode(NodeRef ref, NodeInfo updated) {
         NodeInfo current = requireNode(ref);
         ModelRules.checkNode(updated);
@@ -312,11 +449,23 @@ public final class NetworkInfo {
         changed(NetworkChange.Kind.NODE_CHANGED, ref.module(), ref.node());
     }
 
+    /**
+     * Replaces a node's parameters, as {@link #updateNode} does.
+     *
+     * @param ref        the node
+     * @param parameters every parameter it is to have, in order
+     * @throws EditRefusedException for an unknown node or malformed parameters
+     */
     public void setParameters(NodeRef ref, List<Parameter> parameters) {
         updateNode(ref, requireNode(ref).withParameters(parameters));
     }
 
-    /** Deletes a node and every connection, in any module, that touches it. */
+    /**
+     * Deletes a node and every connection, in any module, that touches it.
+     *
+     * @param ref the node
+     * @throws EditRefusedException when the network has no such node
+     */
     public void deleteNode(NodeRef ref) {
         requireNode(ref);
         removeConnectionsTouching(ref);
@@ -324,7 +473,14 @@ public final class NetworkInfo {
         changed(NetworkChange.Kind.NODE_DELETED, ref.module(), ref.node());
     }
 
-    /** Renames a node in its module; its connections follow. A name already used is refused: replace or merge. */
+    /**
+     * Renames a node in its module; its connections follow. A name already used is refused: replace or merge.
+     *
+     * @param ref     the node
+     * @param newName its new name in the same module
+     * @return the renamed node's module and name
+     * @throws EditRefusedException for an unknown node, a malformed name, or a name the module already has
+     */
     public NodeRef renameNode(NodeRef ref, String newName) {
         NodeInfo node = requireNode(ref);
         ModelRules.checkName("node", newName);
@@ -345,6 +501,11 @@ public final class NetworkInfo {
     /**
      * Replace Node (thesis Figure 28): {@code replaced} and all its connections go; {@code replacement}
      * takes its name and place and keeps only its own connections. Both live in the same module.
+     *
+     * @param replaced    the node that goes
+     * @param replacement the node that takes its name and place
+     * @return the resulting node, named as {@code replaced}
+     * @throws EditRefusedException when either node is unknown, they are in different modules, or they are one node
      */
     public NodeRef replaceNode(NodeRef replaced, NodeRef replacement) {
         requireNode(replaced);
@@ -368,6 +529,13 @@ public final class NetworkInfo {
      * Merge Nodes (thesis Figure 29): one node results, at {@code first}'s place and with its name,
      * host, path and class; the parameters follow {@code policy}. Every connection of either node is
      * redirected to it; connections that become identical are kept once.
+     *
+     * @param first  the node that stays
+     * @param second the node merged into it, which goes
+     * @param policy whose parameters the result keeps
+     * @return the resulting node, {@code first}
+     * @throws EditRefusedException when either node is unknown, they are one node, or one is a Data and the other a
+     *                              Relation
      */
     public NodeRef mergeNodes(NodeRef first, NodeRef second, MergePolicy policy) {
         NodeInfo a = requireNode(first);
@@ -421,7 +589,14 @@ public final class NetworkInfo {
 
     // ---------------------------------------------------------------- connections
 
-    /** Adds a connection declared by {@code moduleName}; its ends must be one existing Data and one existing Relation. */
+    /**
+     * Adds a connection declared by {@code moduleName}; its ends must be one existing Data and one existing Relation.
+     *
+     * @param moduleName the module that declares it
+     * @param connection the Reader or Writer
+     * @throws EditRefusedException for an unknown module, a missing or wrong-kind end, or a connection some module
+     *                              already declares
+     */
     public void addConnection(String moduleName, ConnectionInfo connection) {
         ModuleInfo module = requireModule(moduleName);
         ModelRules.checkConnectionEnds(this, connection);
@@ -437,7 +612,15 @@ public final class NetworkInfo {
         changed(NetworkChange.Kind.CONNECTION_ADDED, moduleName, connection.toString());
     }
 
-    /** Adds a connection at {@code position} among those {@code moduleName} declares: what undoing a deletion needs. */
+    /**
+     * Adds a connection at {@code position} among those {@code moduleName} declares: what undoing a deletion needs.
+     *
+     * @param moduleName the module that declares it
+     * @param connection the Reader or Writer
+     * @param position   its place, 0 to the module's number of connections
+     * @throws EditRefusedException as {@link #addConnection(String, ConnectionInfo)}, or for {@code position} out of
+     *                              range
+     */
     public void addConnection(String moduleName, ConnectionInfo connection, int position) {
         ModuleInfo module = requireModule(moduleName);
         ModelRules.checkConnectionEnds(this, connection);
@@ -452,6 +635,13 @@ public final class NetworkInfo {
         changed(NetworkChange.Kind.CONNECTION_ADDED, moduleName, connection.toString());
     }
 
+    /**
+     * Deletes a connection.
+     *
+     * @param moduleName the module that declares it
+     * @param connection the Reader or Writer, equal to the declared one
+     * @throws EditRefusedException for an unknown module, or one that does not declare the connection
+     */
     public void deleteConnection(String moduleName, ConnectionInfo connection) {
         ModuleInfo module = requireModule(moduleName);
         if (!module.mutableConnections().remove(connection)) {

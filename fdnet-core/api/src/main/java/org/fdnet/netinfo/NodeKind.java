@@ -15,12 +15,20 @@ public enum NodeKind {
         this.element = element;
     }
 
-    /** The word users see: "Data" or "Relation". */
+    /**
+     * The word users see: "Data" or "Relation".
+     *
+     * @return {@code Data} or {@code Relation}
+     */
     public String label() {
         return label;
     }
 
-    /** The .fdn element that declares a node of this kind. */
+    /**
+     * The .fdn element that declares a node of this kind.
+     *
+     * @return {@code dstructure} or {@code pstructure}
+     */
     public String element() {
         return element;
     }

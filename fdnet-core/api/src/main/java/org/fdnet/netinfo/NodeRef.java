@@ -6,14 +6,30 @@ import java.util.Objects;
  * A fully qualified node name: module and node. Written {@code Module/Node} in files and messages; a node of a
  * nested module is written with the module's path, {@code Arm/Hand/Node}. Node and module names never contain
  * '/', so the last '/' separates the module's path from the node's name.
+ *
+ * @param module the module's full name, e.g. {@code main} or {@code Arm/Hand}
+ * @param node   the node's name in that module
  */
 public record NodeRef(String module, String node) implements Comparable<NodeRef> {
+    /**
+     * Checks the parts.
+     *
+     * @param module the module's full name
+     * @param node   the node's name in it
+     * @throws NullPointerException when {@code module} or {@code node} is null
+     */
     public NodeRef {
         Objects.requireNonNull(module, "module");
         Objects.requireNonNull(node, "node");
     }
 
-    /** Parses {@code Module/Node} (or {@code A/B/Node}); a bare name is a node of {@code defaultModule}. */
+    /**
+     * Parses {@code Module/Node} (or {@code A/B/Node}); a bare name is a node of {@code defaultModule}.
+     *
+     * @param text          the reference as written
+     * @param defaultModule the module of a bare name
+     * @return the reference; whether the node exists is not checked
+     */
     public static NodeRef parse(String text, String defaultModule) {
         int slash = text.lastIndexOf('/');
         if (slash < 0) {

@@ -12,6 +12,15 @@ import java.util.Objects;
  * @param value the text exactly as written
  */
 public record Parameter(String name, ParameterType type, String value) {
+    /**
+     * Checks the parts.
+     *
+     * @param name  the name, or null for a positional parameter
+     * @param type  the declared type, or null
+     * @param value the text as written
+     * @throws NullPointerException     when {@code value} is null
+     * @throws IllegalArgumentException when {@code name} is blank or {@code value} is not a text of {@code type}
+     */
     public Parameter {
         Objects.requireNonNull(value, "value");
         if (name != null && name.isBlank()) {
@@ -22,12 +31,23 @@ public record Parameter(String name, ParameterType type, String value) {
         }
     }
 
-    /** An untyped, unnamed parameter: the original FDNet form. */
+    /**
+     * An untyped, unnamed parameter: the original FDNet form.
+     *
+     * @param value the text
+     * @return a parameter without name or type
+     */
     public static Parameter of(String value) {
         return new Parameter(null, null, value);
     }
 
-    /** An untyped, named parameter. */
+    /**
+     * An untyped, named parameter.
+     *
+     * @param name  the parameter's name, not blank
+     * @param value the text
+     * @return a parameter without type: a string the node gives meaning
+     */
     public static Parameter named(String name, String value) {
         return new Parameter(name, null, value);
     }

@@ -8,21 +8,35 @@ import java.util.Locale;
  * Untyped parameters are plain strings, as in the original FDNet: the node gives them meaning.
  */
 public enum ParameterType {
+    /** Any text, kept exactly as written (white space included). */
     STRING,
+    /** {@code true}, {@code false}, {@code yes} or {@code no}. */
     BOOLEAN,
+    /** A whole number that fits a Java {@code long}. */
     LONG,
+    /** A number as Java's {@code Double.parseDouble} reads it, NaN excepted. */
     DOUBLE,
     /** Comma- or space-separated doubles, e.g. a posture: {@code 0.1, 0.2, 0.3}. */
     DOUBLES,
     /** Base64. */
     BYTES;
 
-    /** The attribute value used in files: {@code long}, {@code doubles}, ... */
+    /**
+     * The attribute value used in files: {@code long}, {@code doubles}, ...
+     *
+     * @return the lower-case name
+     */
     public String attribute() {
         return name().toLowerCase(Locale.ROOT);
     }
 
-    /** The type named by a file's attribute value; {@code null} for no attribute. */
+    /**
+     * The type named by a file's attribute value; {@code null} for no attribute.
+     *
+     * @param attribute the {@code type} attribute's value, or null when the file gives none
+     * @return the type, or null
+     * @throws IllegalArgumentException when the value names no type
+     */
     public static ParameterType fromAttribute(String attribute) {
         if (attribute == null) {
             return null;
@@ -38,13 +52,20 @@ public enum ParameterType {
     /**
      * Checks that {@code value} is a valid text of this type.
      *
+     * @param value the text as written; surrounding white space is ignored (except for STRING)
      * @throws IllegalArgumentException with a message naming the expected form
      */
     public void check(String value) {
         parse(value);
     }
 
-    /** The value converted to its Java form: String, Boolean, Long, Double, double[] or byte[]. */
+    /**
+     * The value converted to its Java form: String, Boolean, Long, Double, double[] or byte[].
+     *
+     * @param value the text as written; surrounding white space is ignored (except for STRING)
+     * @return the parsed value, of the Java class listed above for this type
+     * @throws IllegalArgumentException when the text is not of this type, quoting it and naming the expected form
+     */
     public Object parse(String value) {
         String text = value.strip();
         switch (this) {

@@ -33,18 +33,31 @@ public interface Controller extends NetworkControl {
     /** Lets a held module's Relations fire again; one that missed an input fires once at once. */
     ChangeOutcome resume(String module);
 
-    /** A fresh instance of a Relation (e.g. after it FAILED), with the same definition. */
+    /**
+     * A fresh instance of a Relation (e.g. after it FAILED), with the same definition.
+     *
+     * @param relation the Relation's module and name
+     * @return executed, or failed when it is not a Relation running here
+     */
     ChangeOutcome restart(NodeRef relation);
 
     /**
      * Writes a value into a local Data from outside (the user, a test, a distribution layer feeding a
      * stand-in). Converted to the Data's type.
      *
+     * @param data  the Data's module and name
+     * @param value the value; its readers fire as for any write
      * @throws IllegalArgumentException naming the Data when it is not running here or the value does not fit
      */
     void setValue(NodeRef data, Value value);
 
-    /** {@link #setValue(NodeRef, Value)} from text in the Data's own type ({@code 0.5}, {@code 1,2,3}, ...). */
+    /**
+     * {@link #setValue(NodeRef, Value)} from text in the Data's own type ({@code 0.5}, {@code 1,2,3}, ...).
+     *
+     * @param data the Data's module and name
+     * @param text the value's text form ({@link Value#parse})
+     * @throws IllegalArgumentException naming the Data when it is not running here or the text does not fit
+     */
     void setValue(NodeRef data, String text);
 
     /** {@link #setValue(NodeRef, String)} as a change request: refused with the reason instead of thrown. */
@@ -59,35 +72,88 @@ public interface Controller extends NetworkControl {
         }
     }
 
-    /** The Data's current value, or {@code null} when it is not running here. */
+    /**
+     * The Data's current value, or {@code null} when it is not running here.
+     *
+     * @param data the Data's module and name
+     * @return its latest committed value, or null
+     */
     Value value(NodeRef data);
 
-    /** Subscribes to every value of a running Data, in order; close the handle to stop. */
+    /**
+     * Subscribes to every value of a Data, in order; close the handle to stop. The subscription holds while the
+     * Data's module is unloaded and sees the values again when it returns.
+     *
+     * @param data     the Data's module and name
+     * @param observer called under the commit lock for each value: enqueue and return
+     * @return the handle that ends the subscription
+     * @throws IllegalArgumentException when the network defines no such Data
+     */
     AutoCloseable observe(NodeRef data, DataValueObserver observer);
 
-    /** The state of a running Relation, or {@code null} when it is not running here. */
+    /**
+     * The state of a running Relation, or {@code null} when it is not running here.
+     *
+     * @param relation the Relation's module and name
+     * @return its status, failure cause, missing inputs and firing count, or null
+     */
     RelationState relationState(NodeRef relation);
 
-    /** Every running Relation's state, in definition order. */
+    /**
+     * Every running Relation's state, in definition order.
+     *
+     * @return a new list
+     */
     List<RelationState> relationStates();
 
-    /** The id events carry for {@code node} (stable for the whole run), or -1 if it never ran here. */
+    /**
+     * The id events carry for {@code node} (stable for the whole run), or -1 if it never ran here.
+     *
+     * @param node the node's module and name
+     * @return its id, or -1
+     */
     int nodeId(NodeRef node);
 
+    /**
+     * The modules running now.
+     *
+     * @return their names, {@code main} included
+     */
     Set<String> loadedModules();
 
+    /**
+     * The loaded modules whose Relations are on hold.
+     *
+     * @return their names
+     */
     Set<String> heldModules();
 
-    /** Connections with one end on another host (see {@link Placement}). */
+    /**
+     * Connections with one end on another host (see {@link Placement}).
+     *
+     * @return every such connection of the running network, broken ones included
+     */
     List<RemoteLink> remoteLinks();
 
     /**
      * The running network as a definition, including every node and connection it built itself, ready
      * to save as {@code .fdn}. A copy: editing it changes nothing.
+     *
+     * @return a new copy of the definition
      */
     NetworkInfo snapshot();
 
+    /**
+     * Tells {@code listener} of every change request from now on, after it settled.
+     *
+     * @param listener the listener; it must not block
+     */
     void addChangeListener(ChangeListener listener);
 
+    /**
+     * Stops telling {@code listener}.
+     *
+     * @param listener a listener added before; any other is ignored
+     */
     void removeChangeListener(ChangeListener listener);
 }

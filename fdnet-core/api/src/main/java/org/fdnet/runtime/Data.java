@@ -9,18 +9,60 @@ import org.fdnet.event.ValueType;
  * <p>A subclass needs a public no-argument constructor. {@link #init} runs once, before the Data is
  * wired; the parameter {@code initial}, when present, is the first value (see {@link #initialValue}).
  * Methods are called by the engine only; a Data never holds a lock of its own and never blocks.
+ *
+ * <p>A Data holding a number that clamps every write into {@code [min, max]}:
+ *
+ * <pre>{@code
+ * public class Clamped extends Data {
+ *     private double min;
+ *     private double max;
+ *
+ *     @Override
+ *     public ValueType type() {
+ *         return ValueType.DOUBLE;
+ *     }
+ *
+ *     @Override
+ *     protected void init(NodeParameters parameters) {
+ *         min = parameters.requireDouble("min");
+ *         max = parameters.requireDouble("max");
+ *     }
+ *
+ *     @Override
+ *     protected Value accept(Value proposed) {   // already a DOUBLE value
+ *         return Value.of(Math.max(min, Math.min(max, proposed.asDouble())));
+ *     }
+ * }
+ * }</pre>
  */
 public abstract class Data {
     private volatile DataPort port;
 
-    /** The type of every value this Data holds. */
+    /**
+     * The type of every value this Data holds; written values are converted to it before {@link #accept}.
+     *
+     * @return the same type on every call
+     */
     public abstract ValueType type();
 
-    /** Reads parameters; throw {@link ParameterException} (via {@link NodeParameters}) on a bad one. */
+    /**
+     * Reads parameters, once, before the Data is wired; throw {@link ParameterException} (via
+     * {@link NodeParameters}) on a bad one.
+     *
+     * @param parameters the node's parameters as the network file gives them
+     * @throws Exception when the node cannot start: the start, module load or change that would make it is
+     *                   refused, with this message after the node's name, and the network stays as it was
+     */
     protected void init(NodeParameters parameters) throws Exception {
     }
 
-    /** The value before anyone writes: parameter {@code initial} when given, else the type's zero. */
+    /**
+     * The value before anyone writes: parameter {@code initial} when given, else the type's zero.
+     *
+     * @param parameters the node's parameters
+     * @return the first value, not yet stamped (the engine converts it to {@link #type()} and stamps it)
+     * @throws ParameterException when {@code initial} is not a value of {@link #type()}
+     */
     protected Value initialValue(NodeParameters parameters) {
         String initial = parameters.text("initial");
         if (initial == null) {
@@ -38,6 +80,10 @@ public abstract class Data {
      * Checks or shapes a value about to be written (already converted to {@link #type()}): return it, a
      * corrected value (e.g. clamped), or throw IllegalArgumentException to refuse it. Called on the
      * writer's thread, outside any lock; must be fast and free of side effects.
+     *
+     * @param proposed the value about to be written, never null
+     * @return the value to store: {@code proposed} itself or a replacement of the same {@link #type()}, never null
+     * @throws IllegalArgumentException to refuse the write, saying why (the writing Relation's firing fails)
      */
     protected Value accept(Value proposed) {
         return proposed;
@@ -47,13 +93,25 @@ public abstract class Data {
     protected void close() {
     }
 
-    /** The current value (the engine's, always the latest committed one). */
+    /**
+     * The current value (the engine's, always the latest committed one).
+     *
+     * @return the latest committed value (the last one, once the Data has left the network), or null before it first
+     *         joins a running network
+     */
     public final Value value() {
         DataPort p = port;
         return p == null ? null : p.current();
     }
 
-    /** Writes a value from outside the dataflow (a sensor, a device); see {@link SensorData}. */
+    /**
+     * Writes a value from outside the dataflow (a sensor, a device); see {@link SensorData}.
+     *
+     * @param value the value, converted to {@link #type()} and passed through {@link #accept}; not null
+     * @throws IllegalStateException when this Data never joined a running network (once it has left, values are
+     *                               ignored)
+     * @throws IllegalArgumentException when the value cannot be converted or {@link #accept} refuses it
+     */
     protected final void publish(Value value) {
         DataPort p = port;
         if (p == null) {
@@ -76,13 +134,27 @@ public abstract class Data {
      * ({@code org.fdnet.runtime.engine}); node authors never do.
      */
     public interface DataPort {
+        /**
+         * The Data's value as last committed.
+         *
+         * @return the latest committed value
+         */
         Value current();
 
+        /**
+         * Converts, checks, stamps and stores a value from outside a firing, then tells the readers; ignored once the
+         * Data has left the network.
+         *
+         * @param value the value to write, not null
+         */
         void publish(Value value);
 
         /**
          * Publishes {@code values[i]} into {@code ports[i]} in one commit, as {@link SensorData#pushTogether}
          * documents (null ports and values, and ports of Datas no longer running, are left out).
+         *
+         * @param ports  the Datas to write, parallel to {@code values}
+         * @param values the values to write; cleared when this returns
          */
         void publishTogether(DataPort[] ports, Value[] values);
     }

@@ -10,6 +10,12 @@ import org.fdnet.netinfo.NodeRef;
  */
 @FunctionalInterface
 public interface DataValueObserver {
-    /** {@code value} carries its timestamp ({@link Value#time()}), unique and increasing for this Data. */
+    /**
+     * {@code value} carries its timestamp ({@link Value#time()}), unique and increasing for this Data.
+     *
+     * @param data   the Data that took the value
+     * @param dataId the id its events carry ({@link Controller#nodeId})
+     * @param value  the committed, stamped value
+     */
     void valueChanged(NodeRef data, int dataId, Value value);
 }

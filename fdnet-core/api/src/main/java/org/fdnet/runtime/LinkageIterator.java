@@ -17,7 +17,13 @@ import org.fdnet.netinfo.NodeRef;
  * the connections it crosses, each with whether it is live (both ends running, active).
  */
 public final class LinkageIterator implements Iterable<LinkageIterator.Linkage> {
-    /** One connection crossed: declared by {@code module}; {@code live} when both ends run here. */
+    /**
+     * One connection crossed.
+     *
+     * @param module     the module that declares it
+     * @param connection the Reader or Writer
+     * @param live       whether both ends run and it is active
+     */
     public record Linkage(String module, ConnectionInfo connection, boolean live) {
     }
 
@@ -61,6 +67,11 @@ public final class LinkageIterator implements Iterable<LinkageIterator.Linkage> 
         return linkages.iterator();
     }
 
+    /**
+     * The connections in the order the iterator yields them.
+     *
+     * @return an unmodifiable list, nearest first
+     */
     public List<Linkage> toList() {
         return List.copyOf(linkages);
     }

@@ -8,5 +8,13 @@ package org.fdnet.runtime;
  */
 @FunctionalInterface
 public interface MessageServant {
+    /**
+     * Answers one message; called on a messaging thread, never for two messages at once.
+     *
+     * @param message  what to do, e.g. {@code plan}
+     * @param argument the sender's argument
+     * @return the reply, any FDNet value
+     * @throws MessageRefusedException when it cannot answer, saying why (any other exception is refused too)
+     */
     Value answer(String message, Value argument);
 }

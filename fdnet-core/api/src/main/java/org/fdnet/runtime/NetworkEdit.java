@@ -10,5 +10,11 @@ import org.fdnet.netinfo.NetworkInfo;
  */
 @FunctionalInterface
 public interface NetworkEdit {
+    /**
+     * Makes the edit on {@code network}.
+     *
+     * @param network a copy of the running network's definition, discarded when this throws
+     * @throws org.fdnet.netinfo.EditRefusedException to refuse the edit, saying why
+     */
     void applyTo(NetworkInfo network);
 }

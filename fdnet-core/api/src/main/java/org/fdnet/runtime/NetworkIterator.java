@@ -30,6 +30,11 @@ public final class NetworkIterator implements Iterable<NodeRef> {
         return nodes.iterator();
     }
 
+    /**
+     * The nodes in the order the iterator yields them.
+     *
+     * @return an unmodifiable list, nearest first; the start node is in it only when it lies on a loop
+     */
     public List<NodeRef> toList() {
         return List.copyOf(nodes);
     }

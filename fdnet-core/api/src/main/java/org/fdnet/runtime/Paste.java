@@ -23,20 +23,45 @@ public final class Paste {
         this.scope = scope;
     }
 
+    /**
+     * Creates a node; a node of a loaded module starts at once.
+     *
+     * @param module the module it goes into
+     * @param node   its definition: kind, name, class, host, parameters
+     * @return executed, or failed with the reason (e.g. the name is taken, the class cannot start)
+     */
     public ChangeOutcome create(String module, NodeInfo node) {
         return scope.apply("create " + module + "/" + node.name(), NetworkEdits.addNode(module, node));
     }
 
+    /**
+     * Destroys a node with every connection touching it.
+     *
+     * @param node the node's module and name
+     * @return executed, or failed with the reason (e.g. there is no such node)
+     */
     public ChangeOutcome destroy(NodeRef node) {
         return scope.apply("destroy " + node, NetworkEdits.deleteNode(node));
     }
 
-    /** The Relation {@code relation} reads {@code data}. */
+    /**
+     * The Relation {@code relation} reads {@code data}.
+     *
+     * @param data     the Data to read
+     * @param relation the Relation that reads it; its module declares the connection
+     * @return executed, or failed with the reason (e.g. an end does not exist)
+     */
     public ChangeOutcome connectReader(NodeRef data, NodeRef relation) {
         return connect(ConnectionInfo.reader(data, relation));
     }
 
-    /** The Relation {@code relation} writes {@code data}. */
+    /**
+     * The Relation {@code relation} writes {@code data}.
+     *
+     * @param relation the Relation that writes; its module declares the connection
+     * @param data     the Data it writes
+     * @return executed, or failed with the reason (e.g. an end does not exist)
+     */
     public ChangeOutcome connectWriter(NodeRef relation, NodeRef data) {
         return connect(ConnectionInfo.writer(relation, data));
     }
@@ -45,7 +70,14 @@ public final class Paste {
         return scope.apply("connect " + c, NetworkEdits.addConnection(c.relation().module(), c));
     }
 
-    /** Removes the connection of this kind between the two nodes, whichever module declares it. */
+    /**
+     * Removes the connection of this kind between the two nodes, whichever module declares it.
+     *
+     * @param kind     Reader or Writer
+     * @param data     the connection's Data end
+     * @param relation the connection's Relation end
+     * @return executed, or failed when there is no such connection
+     */
     public ChangeOutcome disconnect(ConnectionKind kind, NodeRef data, NodeRef relation) {
         return scope.apply("disconnect " + kind.label() + " " + data + " / " + relation, network -> {
             for (var linked : network.connectionsOf(data)) {
@@ -59,7 +91,14 @@ public final class Paste {
         });
     }
 
-    /** Makes a declared but inactive ({@code exist = no}) connection live (the thesis's "activate"). */
+    /**
+     * Makes a declared but inactive ({@code exist = no}) connection live (the thesis's "activate").
+     *
+     * @param kind     Reader or Writer
+     * @param data     the connection's Data end
+     * @param relation the connection's Relation end
+     * @return executed, or failed when there is no such connection or it is already active
+     */
     public ChangeOutcome activate(ConnectionKind kind, NodeRef data, NodeRef relation) {
         return scope.apply("activate " + kind.label() + " " + data + " / " + relation, network -> {
             for (var linked : network.connectionsOf(data)) {
@@ -81,6 +120,13 @@ public final class Paste {
     /**
      * Creates a Relation and its connections as one change (all or nothing): it reads {@code reads} and
      * writes {@code writes}. Datas to create first can be passed in {@code newDatas} (same module).
+     *
+     * @param module   the module it goes into, made (not loaded at start) when missing
+     * @param relation the Relation's definition
+     * @param newDatas Datas to create in {@code module} first, may be empty
+     * @param reads    the Datas it reads, in Reader order
+     * @param writes   the Datas it writes, in Writer order
+     * @return executed, or failed with the reason (then nothing of it was made)
      */
     public ChangeOutcome pasteRelation(String module, NodeInfo relation, List<NodeInfo> newDatas, List<NodeRef> reads,
                                        List<NodeRef> writes) {

@@ -10,7 +10,12 @@ public final class Reflect {
         this.scope = scope;
     }
 
-    /** The node's description, or {@code null} when the network defines no such node. */
+    /**
+     * The node's description, or {@code null} when the network defines no such node.
+     *
+     * @param ref the node's module and name
+     * @return its description now, or null when the network defines no such node
+     */
     public NodeDescription describe(NodeRef ref) {
         return scope.describe(ref);
     }

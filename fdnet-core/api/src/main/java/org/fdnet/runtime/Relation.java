@@ -10,15 +10,46 @@ package org.fdnet.runtime;
  * engine never runs one instance twice at a time, so a Relation keeps state in plain fields. An
  * exception from {@code compute} marks the Relation FAILED (its writes of that firing are dropped); a
  * parameter change or a module reload makes a fresh instance.
+ *
+ * <p>A Relation that scales its first input by the parameter {@code gain} and writes it to every output:
+ *
+ * <pre>{@code
+ * public class Gain extends Relation {
+ *     private double gain;
+ *
+ *     @Override
+ *     protected void init(NodeParameters parameters) {
+ *         gain = parameters.doubleValue("gain", 1.0);
+ *     }
+ *
+ *     @Override
+ *     protected void compute(RelationContext context) {
+ *         Value in = context.input(0);   // null while that Data is not in the running network
+ *         if (in != null) {
+ *             context.outputAll(Value.of(gain * in.asDouble()));
+ *         }
+ *     }
+ * }
+ * }</pre>
  */
 public abstract class Relation {
-    /** Reads parameters; throw {@link ParameterException} (via {@link NodeParameters}) on a bad one. */
+    /**
+     * Reads parameters, once, before the first firing; throw {@link ParameterException} (via {@link NodeParameters})
+     * on a bad one.
+     *
+     * @param parameters the node's parameters as the network file gives them
+     * @throws Exception when the node cannot start: the start, module load or change that would make it is
+     *                   refused, with this message after the node's name, and the network stays as it was
+     */
     protected void init(NodeParameters parameters) throws Exception {
     }
 
     /**
      * One firing: read inputs from {@code context} (a consistent snapshot), write outputs to it (they
      * become visible together when this returns normally).
+     *
+     * @param context this firing's inputs, outputs, clock and the Servants; valid only until this returns
+     * @throws Exception to fail the firing: its writes are dropped and the Relation is marked FAILED
      */
     protected abstract void compute(RelationContext context) throws Exception;
 

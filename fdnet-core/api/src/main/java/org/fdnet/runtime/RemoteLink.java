@@ -16,6 +16,11 @@ import org.fdnet.netinfo.ConnectionInfo;
  */
 public record RemoteLink(ConnectionInfo connection, String remoteEnd, String remoteHost, boolean standIn,
                          String problem) {
+    /**
+     * Whether the link cannot carry values.
+     *
+     * @return true when {@link #problem()} says why
+     */
     public boolean broken() {
         return problem != null;
     }

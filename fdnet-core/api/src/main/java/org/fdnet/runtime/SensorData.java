@@ -5,9 +5,42 @@ package org.fdnet.runtime;
  * mirroring a remote Data. Anyone holding the instance calls {@link #push}; the value enters the network
  * exactly as if a Relation had written it (stamped, logged, readers told). {@link #start} and
  * {@link #stop} frame the time the Data is part of a running network, e.g. to start a polling thread.
+ *
+ * <p>A thermometer polled ten times a second while the network runs ({@code readCelsius()} stands for the
+ * device driver's call):
+ *
+ * <pre>{@code
+ * public class Thermometer extends SensorData {
+ *     private ScheduledExecutorService poller;
+ *
+ *     @Override
+ *     public ValueType type() {
+ *         return ValueType.DOUBLE;
+ *     }
+ *
+ *     @Override
+ *     protected void start() {
+ *         poller = Executors.newSingleThreadScheduledExecutor();
+ *         poller.scheduleAtFixedRate(() -> push(Value.of(readCelsius())), 0, 100, TimeUnit.MILLISECONDS);
+ *     }
+ *
+ *     @Override
+ *     protected void stop() {
+ *         poller.shutdownNow();
+ *     }
+ * }
+ * }</pre>
  */
 public abstract class SensorData extends Data {
-    /** Puts a value into the running network. Thread-safe; runs the readers on the caller's thread when it can. */
+    /**
+     * Puts a value into the running network. Thread-safe; runs the readers on the caller's thread when it can.
+     *
+     * @param value the new value, converted to {@link #type()} and passed through {@link #accept}; not null. To
+     *              say which sensor snapshot it comes from, push {@code value.withTick(n)}
+     * @throws IllegalStateException when this Data never joined a running network (once it has left, values are
+     *                               ignored)
+     * @throws IllegalArgumentException when the value cannot be converted or {@link #accept} refuses it
+     */
     public final void push(Value value) {
         publish(value);
     }
@@ -18,6 +51,8 @@ public abstract class SensorData extends Data {
      * not in a running network, is left out. The sensors must belong to the same network. {@code values} is
      * cleared. Thread-safe; runs the readers on the caller's thread when it can.
      *
+     * @param sensors the Datas to write, parallel to {@code values}; null entries are skipped
+     * @param values  the values to write, as long as {@code sensors}; null entries are skipped
      * @throws IllegalArgumentException when the sensors belong to different networks, or a value does not fit
      *                                  (nothing is written then)
      */

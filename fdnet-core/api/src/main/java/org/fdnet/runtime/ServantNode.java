@@ -36,16 +36,29 @@ public final class ServantNode {
         return ownerRuns.getAsBoolean();
     }
 
+    /**
+     * This servant's own name, the last part of its path.
+     *
+     * @return the name, empty for the root
+     */
     public String name() {
         return name;
     }
 
-    /** The parent servant, or {@code null} for the root. */
+    /**
+     * The parent servant, or {@code null} for the root.
+     *
+     * @return the parent, or null
+     */
     public ServantNode getParent() {
         return parent;
     }
 
-    /** The servant every other descends from. */
+    /**
+     * The servant every other descends from.
+     *
+     * @return the root of this servant's tree
+     */
     public ServantNode getRootServant() {
         ServantNode n = this;
         while (n.parent != null) {
@@ -54,20 +67,39 @@ public final class ServantNode {
         return n;
     }
 
-    /** {@code /} for the root, else the names from the root: {@code /arm/planner}. */
+    /**
+     * {@code /} for the root, else the names from the root: {@code /arm/planner}.
+     *
+     * @return the absolute path
+     */
     public String path() {
         return parent == null ? "/" : (parent.parent == null ? "" : parent.path()) + "/" + name;
     }
 
-    /** Whether this servant answers messages (a grouping servant does not). */
+    /**
+     * Whether this servant answers messages (a grouping servant does not).
+     *
+     * @return true when a {@link MessageServant} stands behind it
+     */
     public boolean answers() {
         return servant != null;
     }
 
+    /**
+     * The child called {@code childName}.
+     *
+     * @param childName the child's own name
+     * @return the child, or null when there is none of that name
+     */
     public synchronized ServantNode child(String childName) {
         return children.get(childName);
     }
 
+    /**
+     * The children, in the order they joined.
+     *
+     * @return a new list
+     */
     public synchronized List<ServantNode> children() {
         return new ArrayList<>(children.values());
     }

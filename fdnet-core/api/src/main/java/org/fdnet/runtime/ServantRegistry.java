@@ -50,23 +50,46 @@ public final class ServantRegistry implements AutoCloseable {
         });
     }
 
-    /** The servant every other descends from. */
+    /**
+     * The servant every other descends from.
+     *
+     * @return the root, path {@code /}; it answers no message
+     */
     public ServantNode getRootServant() {
         return root;
     }
 
     // ---------------------------------------------------------------- classes and instances
 
-    /** Registers a servant class under {@code name}; its instances are made with its public no-argument constructor. */
+    /**
+     * Registers a servant class under {@code name}; its instances are made with its public no-argument constructor.
+     *
+     * @param name the class's name in servant paths, non-empty, without {@code /} or surrounding spaces; a class
+     *             registered under it before is replaced
+     * @param type the class; it needs a public no-argument constructor
+     * @throws MessageRefusedException when {@code name} is malformed
+     */
     public void setServantClass(String name, Class<? extends MessageServant> type) {
         checkName(name);
         classes.put(name, type);
     }
 
+    /**
+     * The servant class registered under {@code name}.
+     *
+     * @param name the name it was registered under
+     * @return the class, or null when none is registered under that name
+     */
     public Class<? extends MessageServant> getServantClass(String name) {
         return classes.get(name);
     }
 
+    /**
+     * Whether a servant class is registered under {@code name}.
+     *
+     * @param name the name to look up
+     * @return true when {@link #getServantClass} would find one
+     */
     public boolean containsServantClass(String name) {
         return classes.containsKey(name);
     }
@@ -74,6 +97,10 @@ public final class ServantRegistry implements AutoCloseable {
     /**
      * A new instance of the servant class {@code className}, below the root under the first free name
      * {@code className:N} (N from 1), as the thesis's {@code createName} names them.
+     *
+     * @param className the name the servant class was registered under
+     * @return the new instance, below the root
+     * @throws MessageRefusedException when no class is registered under that name or it cannot be made
      */
     public ServantNode instantiate(String className) {
         MessageServant servant = newInstance(className);
@@ -86,12 +113,21 @@ public final class ServantRegistry implements AutoCloseable {
         }
     }
 
-    /** The instance named {@code name:N}, or {@code null}. */
+    /**
+     * The instance named {@code name:N}, or {@code null}.
+     *
+     * @param instanceName the name {@link #instantiate} gave it, e.g. {@code planner:2}
+     * @return the instance, or null when there is none of that name
+     */
     public ServantNode getServantInstance(String instanceName) {
         return instances.get(instanceName);
     }
 
-    /** Removes an instance from the registry and from the tree. */
+    /**
+     * Removes an instance from the registry and from the tree; nothing happens when there is none of that name.
+     *
+     * @param instanceName the name {@link #instantiate} gave it, e.g. {@code planner:2}
+     */
     public void releaseServantInstance(String instanceName) {
         ServantNode node = instances.remove(instanceName);
         if (node != null) {
@@ -122,6 +158,9 @@ public final class ServantRegistry implements AutoCloseable {
      * {@linkplain #withdraw withdrawn}: a Relation offers a servant in its first firing and withdraws it in
      * {@code close}.
      *
+     * @param path    where to put it, e.g. {@code arm/planner} (a leading {@code /} is allowed)
+     * @param servant what answers the messages sent to that path
+     * @return the servant's place in the tree, to pass to {@link #withdraw}
      * @throws MessageRefusedException when the path is malformed or a servant is already there
      */
     public ServantNode offer(String path, MessageServant servant) {
@@ -132,6 +171,12 @@ public final class ServantRegistry implements AutoCloseable {
      * {@link #offer(String, MessageServant)} on behalf of a Relation: the servant leaves the tree by itself once
      * {@code ownerRuns} is false (the Relation failed, was unloaded, destroyed or replaced), even when the Relation
      * did not withdraw it; a new instance of the Relation may then offer the same path.
+     *
+     * @param path      where to put it, e.g. {@code arm/planner} (a leading {@code /} is allowed)
+     * @param servant   what answers the messages sent to that path
+     * @param ownerRuns true while the offering Relation runs; asked whenever the path is looked up
+     * @return the servant's place in the tree, to pass to {@link #withdraw}
+     * @throws MessageRefusedException when the path is malformed or taken by a servant whose owner still runs
      */
     public ServantNode offer(String path, MessageServant servant, BooleanSupplier ownerRuns) {
         List<String> names = parts(path);
@@ -146,14 +191,25 @@ public final class ServantRegistry implements AutoCloseable {
         return node;
     }
 
-    /** Takes {@code node} out of the tree (with what is below it); later messages to its path are refused. */
+    /**
+     * Takes {@code node} out of the tree (with what is below it); later messages to its path are refused.
+     *
+     * @param node a servant of this registry's tree; the root is left alone
+     */
     public void withdraw(ServantNode node) {
         if (node.getParent() != null) {
             node.getParent().release(node);
         }
     }
 
-    /** The servant at {@code path} in this engine's tree ({@code a/b} or {@code /a/b}), or {@code null}. */
+    /**
+     * The servant at {@code path} in this engine's tree ({@code a/b} or {@code /a/b}), or {@code null}. A servant
+     * whose offering Relation no longer runs is withdrawn here and not found.
+     *
+     * @param path the servant's names from the root, separated by {@code /}
+     * @return the servant, or null when there is none at that path
+     * @throws MessageRefusedException when the path is malformed
+     */
     public ServantNode find(String path) {
         ServantNode node = root;
         for (String name : parts(path)) {
@@ -173,6 +229,8 @@ public final class ServantRegistry implements AutoCloseable {
      * The servant at {@code path}; when there is none but its last name is a registered servant class and its parent
      * exists, an instance of that class is made there on demand (a parent "instantiates any child servant").
      *
+     * @param path the servant's names from the root, separated by {@code /}
+     * @return the servant found or made
      * @throws MessageRefusedException when there is no such servant and none can be made
      */
     public ServantNode getServant(String path) {
@@ -213,6 +271,11 @@ public final class ServantRegistry implements AutoCloseable {
     /**
      * Sends {@code message} with {@code argument} to the servant at {@code path}, here or on another host, and
      * returns at once; {@code listener} hears the reply or the reason there is none, once.
+     *
+     * @param path     the servant's path, e.g. {@code arm/planner}
+     * @param message  what to do, as the servant understands it
+     * @param argument the message's argument, any FDNet value
+     * @param listener told exactly once, on a messaging thread: the reply, or the reason there is none
      */
     public void sendMessage(String path, String message, Value argument, ReturnListener listener) {
         Delivery delivery = new Delivery(path, message, argument, listener);
@@ -272,7 +335,12 @@ public final class ServantRegistry implements AutoCloseable {
         return whole.message(path, message, argument);
     }
 
-    /** Whether a servant at {@code path} is here or can be made here on demand. */
+    /**
+     * Whether a servant at {@code path} is here or can be made here on demand.
+     *
+     * @param path the servant's path
+     * @return true when this engine answers messages to it; false too for a malformed path
+     */
     public boolean answersHere(String path) {
         try {
             List<String> names = parts(path);
@@ -283,7 +351,15 @@ public final class ServantRegistry implements AutoCloseable {
         }
     }
 
-    /** The answer of this engine's servant at {@code path}, on the calling thread (a host answering for another). */
+    /**
+     * The answer of this engine's servant at {@code path}, on the calling thread (a host answering for another).
+     *
+     * @param path     the servant's path
+     * @param message  what to do, as the servant understands it
+     * @param argument the message's argument
+     * @return the servant's reply
+     * @throws MessageRefusedException when there is no servant here or it refuses the message
+     */
     public Value answerHere(String path, String message, Value argument) {
         return getServant(path).answer(message, argument);
     }

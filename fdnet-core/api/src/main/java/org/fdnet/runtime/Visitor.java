@@ -17,7 +17,12 @@ public final class Visitor {
         this.scope = scope;
     }
 
-    /** Running nodes that match, in definition order (on every host, when the network spans several). */
+    /**
+     * Running nodes that match, in definition order (on every host, when the network spans several).
+     *
+     * @param filter the test a node's description must pass
+     * @return a new list, from one snapshot of the network
+     */
     public List<NodeDescription> find(Predicate<NodeDescription> filter) {
         List<NodeDescription> result = new ArrayList<>();
         WholeNetwork.Snapshot snapshot = scope.snapshot();
@@ -30,12 +35,20 @@ public final class Visitor {
         return result;
     }
 
-    /** Running Datas. */
+    /**
+     * Running Datas.
+     *
+     * @return their descriptions, in definition order
+     */
     public List<NodeDescription> datas() {
         return find(d -> d.kind() == NodeKind.DATA);
     }
 
-    /** Running Relations. */
+    /**
+     * Running Relations.
+     *
+     * @return their descriptions, in definition order
+     */
     public List<NodeDescription> relations() {
         return find(d -> d.kind() == NodeKind.RELATION);
     }
@@ -43,6 +56,9 @@ public final class Visitor {
     /**
      * Running nodes whose class is {@code className} (fully qualified, or the simple name); a node that names a
      * library class by its bare name ({@code DoubleSensor}) matches the qualified name too.
+     *
+     * @param className e.g. {@code org.fdnet.runtime.library.LowPass} or {@code LowPass}
+     * @return their descriptions, in definition order
      */
     public List<NodeDescription> byClass(String className) {
         String simple = className.substring(className.lastIndexOf('.') + 1);
@@ -50,12 +66,21 @@ public final class Visitor {
                 || d.className().equals(simple));
     }
 
-    /** Running nodes called {@code name} in any module. */
+    /**
+     * Running nodes called {@code name} in any module.
+     *
+     * @param name the node name, without its module
+     * @return their descriptions, in definition order
+     */
     public List<NodeDescription> byName(String name) {
         return find(d -> d.ref().node().equals(name));
     }
 
-    /** Every node the definition holds, loaded or not, in order. */
+    /**
+     * Every node the definition holds, loaded or not, in order.
+     *
+     * @return a new list, module by module
+     */
     public List<NodeRef> defined() {
         return scope.read(Visitor::refs);
     }

@@ -34,12 +34,26 @@ public final class KeyMaker {
     private final Path dir;
     private final Path keytool;
 
+    /**
+     * A maker for the network whose key files live in {@code dir}.
+     *
+     * @param dir the folder of the network's key files, made when missing
+     */
     public KeyMaker(Path dir) {
         this.dir = dir.toAbsolutePath();
         this.keytool = Path.of(System.getProperty("java.home"), "bin", "keytool");
     }
 
-    /** The CA (made once), then a store for each of {@code names} that does not have one yet; returns the files made. */
+    /**
+     * The CA (made once), then a store for each of {@code names} that does not have one yet; returns the files made.
+     *
+     * @param names process names: letters, digits, '.', '_' or '-', not {@code ca}
+     * @return the key stores made now, the CA's first when it was made; empty when every file existed
+     * @throws IllegalArgumentException when a name is not allowed
+     * @throws IOException              when a file cannot be written or made owner-only, or keytool fails (its output
+     *                                  is in the message)
+     * @throws InterruptedException     when interrupted while keytool runs
+     */
     public List<Path> make(List<String> names) throws IOException, InterruptedException {
         for (String n : names) {
             if (!NAME.matcher(n).matches() || n.equals(CA)) {
@@ -83,7 +97,11 @@ public final class KeyMaker {
         return made;
     }
 
-    /** Deletes the folder with every key file in it: for throwaway networks (benchmarks). */
+    /**
+     * Deletes the folder with every key file in it: for throwaway networks (benchmarks).
+     *
+     * @throws IOException when a file cannot be deleted
+     */
     public void deleteAll() throws IOException {
         if (!Files.isDirectory(dir)) {
             return;
@@ -96,6 +114,12 @@ public final class KeyMaker {
         Files.delete(dir);
     }
 
+    /**
+     * Where a process's key store is, made or not.
+     *
+     * @param name the process name
+     * @return {@code NAME.p12} in the folder
+     */
     public Path store(String name) {
         return dir.resolve(name + ".p12");
     }

@@ -23,8 +23,16 @@ import javax.net.ssl.TrustManagerFactory;
  * @param context TLS that presents that key and trusts only the certificates the CA signed
  */
 public record TlsIdentity(Path store, String name, SSLContext context) {
+    /** The name of the file beside the stores that holds their one password. */
     public static final String PASSWORD_FILE = "password";
 
+    /**
+     * Checks the parts.
+     *
+     * @param store   the PKCS#12 file, not null
+     * @param name    the key entry's alias, not null
+     * @param context the TLS context, not null
+     */
     public TlsIdentity {
         Objects.requireNonNull(store, "store");
         Objects.requireNonNull(name, "name");
@@ -34,6 +42,8 @@ public record TlsIdentity(Path store, String name, SSLContext context) {
     /**
      * Loads {@code store} and the {@code password} file beside it.
      *
+     * @param store a process's {@code NAME.p12} made by {@code fdnet keys}
+     * @return the identity, with a TLS 1.3 context that presents the key and trusts the CA
      * @throws IllegalArgumentException naming the file and what is wrong with it
      */
     public static TlsIdentity load(Path store) {

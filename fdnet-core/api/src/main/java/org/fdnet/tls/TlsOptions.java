@@ -28,11 +28,22 @@ public final class TlsOptions {
         }
     }
 
-    /** See {@link TransportSecurity#requireSafeBind}. */
+    /**
+     * See {@link TransportSecurity#requireSafeBind}.
+     *
+     * @param what    the server, for the message, e.g. {@code the logger's receiver}
+     * @param address the address it is to listen on
+     * @throws IllegalStateException when it would listen on a non-loopback address without TLS or {@code --insecure}
+     */
     public void requireSafeBind(String what, String address) {
         TransportSecurity.requireSafeBind(what, address, insecure);
     }
 
+    /**
+     * Whether {@code --tls} was given.
+     *
+     * @return true when this process is to speak TLS
+     */
     public boolean tls() {
         return store != null;
     }

@@ -29,7 +29,11 @@ public final class TransportSecurity {
     private TransportSecurity() {
     }
 
-    /** Makes every later FDNet connection of this process mutual TLS with {@code tls}. */
+    /**
+     * Makes every later FDNet connection of this process mutual TLS with {@code tls}.
+     *
+     * @param tls this process's identity
+     */
     public static void use(TlsIdentity tls) {
         identity = tls;
         LOG.info("TLS on: this process is {} ({})", tls.name(), tls.store());
@@ -40,10 +44,20 @@ public final class TransportSecurity {
         identity = null;
     }
 
+    /**
+     * This process's identity.
+     *
+     * @return the identity given to {@link #use}, or empty while the process speaks plain TCP
+     */
     public static Optional<TlsIdentity> current() {
         return Optional.ofNullable(identity);
     }
 
+    /**
+     * Whether this process speaks TLS.
+     *
+     * @return true after {@link #use}, until {@link #off}
+     */
     public static boolean isOn() {
         return identity != null;
     }
@@ -51,6 +65,7 @@ public final class TransportSecurity {
     /**
      * Fails unless this process speaks TLS: for the ORB's TLS socket factories, which JacORB may only use then.
      *
+     * @param use what needs TLS, for the message
      * @throws IOException naming {@code use}
      */
     public static void require(String use) throws IOException {
@@ -59,7 +74,15 @@ public final class TransportSecurity {
         }
     }
 
-    /** A connected client socket (no Nagle delay); with TLS, the handshake is done, so a refused peer fails here and not later. */
+    /**
+     * A connected client socket (no Nagle delay); with TLS, the handshake is done, so a refused peer fails here and not later.
+     *
+     * @param host          the server's address
+     * @param port          its port
+     * @param timeoutMillis how long the connection, and the TLS handshake, may take each, ms
+     * @return the socket, without a read timeout
+     * @throws IOException when the server cannot be reached or the handshake fails (the socket is closed then)
+     */
     public static Socket connect(String host, int port, int timeoutMillis) throws IOException {
         TlsIdentity tls = identity;
         Socket s = tls == null ? new Socket() : tls.context().getSocketFactory().createSocket();
@@ -79,7 +102,12 @@ public final class TransportSecurity {
         }
     }
 
-    /** An unbound server socket; with TLS, every client must present a certificate the network's CA signed. */
+    /**
+     * An unbound server socket; with TLS, every client must present a certificate the network's CA signed.
+     *
+     * @return a new socket; the caller binds it
+     * @throws IOException when the socket cannot be made
+     */
     public static ServerSocket serverSocket() throws IOException {
         TlsIdentity tls = identity;
         if (tls == null) {
@@ -96,6 +124,9 @@ public final class TransportSecurity {
     /**
      * Refuses to expose {@code what} on a non-loopback {@code address} without TLS, unless {@code insecure}.
      *
+     * @param what     the server, for the message, e.g. {@code the logger's receiver}
+     * @param address  the address it is to listen on; a name that does not resolve counts as non-loopback
+     * @param insecure {@code --insecure}: allow it without TLS, with a warning in the log
      * @throws IllegalStateException saying what to do
      */
     public static void requireSafeBind(String what, String address, boolean insecure) {

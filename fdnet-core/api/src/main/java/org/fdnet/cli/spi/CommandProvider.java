@@ -8,12 +8,20 @@ import java.util.List;
  * {@code @Command}; its name is the subcommand's name.
  */
 public interface CommandProvider {
-    /** Commands under {@code fdnet} (e.g. {@code run}, {@code logger}). */
+    /**
+     * Commands under {@code fdnet} (e.g. {@code run}, {@code logger}).
+     *
+     * @return picocli {@code @Command} objects, one per subcommand; none by default
+     */
     default List<Object> commands() {
         return List.of();
     }
 
-    /** Benchmarks under {@code fdnet bench} (e.g. {@code core}, {@code logger}). */
+    /**
+     * Benchmarks under {@code fdnet bench} (e.g. {@code core}, {@code logger}).
+     *
+     * @return picocli {@code @Command} objects, one per benchmark; none by default
+     */
     default List<Object> benchmarks() {
         return List.of();
     }

@@ -11,7 +11,12 @@ public final class CommitReport {
     private CommitReport() {
     }
 
-    /** {@code logger: all N events of run U committed}, or the counts that fell short. */
+    /**
+     * {@code logger: all N events of run U committed}, or the counts that fell short.
+     *
+     * @param client a client, normally closed already (its counts are then final)
+     * @return one line, without a line break
+     */
     public static String of(LoggerClient client) {
         ClientStatus s = client.status();
         if (s.acked() == s.accepted() && s.lost() == 0) {

@@ -70,11 +70,21 @@ public final class LoggerClient implements EventSink {
     private volatile boolean closing;
     private volatile Socket socket;
 
+    /**
+     * A client for a new run of its own, with a random id; it starts connecting at once, in the background.
+     *
+     * @param settings the logger's address, the memory and journal bounds, the timeouts
+     */
     public LoggerClient(LoggerClientSettings settings) {
         this(settings, UUID.randomUUID());
     }
 
-    /** A client for a given run id: a restarted producer that must resume its run passes the same id. */
+    /**
+     * A client for a given run id: a restarted producer that must resume its run passes the same id.
+     *
+     * @param settings the logger's address, the memory and journal bounds, the timeouts
+     * @param run      the run's id, which the logger resumes when it knows it
+     */
     public LoggerClient(LoggerClientSettings settings, UUID run) {
         this(settings, run, null);
     }
@@ -82,12 +92,23 @@ public final class LoggerClient implements EventSink {
     /**
      * A client recording {@code host}'s part of the network run {@code networkRun}: the logger files every event
      * of this client under that run, with the host beside it.
+     *
+     * @param settings   the logger's address, the memory and journal bounds, the timeouts
+     * @param networkRun the network run, as its coordinator decided it
+     * @param host       the host this client records
      */
     public LoggerClient(LoggerClientSettings settings, RunIdentity networkRun, String host) {
         this(settings, networkRun, host, 0);
     }
 
-    /** As above, for a host whose clock is {@code clockOffsetMicros} ahead of the run's coordinator's. */
+    /**
+     * As above, for a host whose clock is {@code clockOffsetMicros} ahead of the run's coordinator's.
+     *
+     * @param settings          the logger's address, the memory and journal bounds, the timeouts
+     * @param networkRun        the network run, as its coordinator decided it
+     * @param host              the host this client records
+     * @param clockOffsetMicros how far this host's clock is ahead of the coordinator's, µs (negative: behind)
+     */
     public LoggerClient(LoggerClientSettings settings, RunIdentity networkRun, String host, long clockOffsetMicros) {
         this(settings, UUID.randomUUID(), new RunFrame(networkRun, host, clockOffsetMicros));
     }
@@ -102,11 +123,20 @@ public final class LoggerClient implements EventSink {
         sender.start();
     }
 
+    /**
+     * The id of the stream of events this client sends (its run in the logger).
+     *
+     * @return the id given or made at construction
+     */
     public UUID run() {
         return run;
     }
 
-    /** The network run this client records a part of, or {@code null} when it does not say. */
+    /**
+     * The network run this client records a part of, or {@code null} when it does not say.
+     *
+     * @return the network run, or null
+     */
     public RunIdentity networkRun() {
         return networkRun == null ? null : networkRun.run();
     }
@@ -154,7 +184,12 @@ public final class LoggerClient implements EventSink {
         }
     }
 
-    /** True when every accepted event is committed by the logger within the timeout. */
+    /**
+     * True when every accepted event is committed by the logger within the timeout.
+     *
+     * @param timeoutMillis how long to wait at most, ms
+     * @return true when everything accepted is committed; false on timeout or interruption
+     */
     public boolean flush(long timeoutMillis) {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMillis);
         lock.lock();
@@ -176,6 +211,11 @@ public final class LoggerClient implements EventSink {
         }
     }
 
+    /**
+     * The client's counts now.
+     *
+     * @return a consistent snapshot
+     */
     public ClientStatus status() {
         lock.lock();
         try {
@@ -186,6 +226,11 @@ public final class LoggerClient implements EventSink {
         }
     }
 
+    /**
+     * Events lost because even the journal was full.
+     *
+     * @return the count since the client started
+     */
     public long lostEvents() {
         return status().lost();
     }

@@ -19,6 +19,19 @@ import java.util.Objects;
 public record LoggerClientSettings(String host, int port, String coreName, int memoryEvents,
                                    Path journalDirectory, long journalBytes, Duration reconnectDelay,
                                    Duration flushTimeout) {
+    /**
+     * Checks the settings.
+     *
+     * @param host             the logger's receiver address, not null
+     * @param port             the receiver port, 1 to 65535
+     * @param coreName         the core's name, not null
+     * @param memoryEvents     events kept in memory, at least 1000
+     * @param journalDirectory where the journal lives, not null
+     * @param journalBytes     the journal's bound, at least 0 (0: no journal)
+     * @param reconnectDelay   wait between attempts to reach the logger
+     * @param flushTimeout     how long a flush waits for commits
+     * @throws IllegalArgumentException when a number is out of its range, naming it
+     */
     public LoggerClientSettings {
         Objects.requireNonNull(host, "host");
         Objects.requireNonNull(coreName, "coreName");
@@ -34,7 +47,14 @@ public record LoggerClientSettings(String host, int port, String coreName, int m
         }
     }
 
-    /** Defaults: 200,000 events in memory, a 1 GiB journal under the temp directory, 500 ms reconnect. */
+    /**
+     * Defaults: 200,000 events in memory, a 1 GiB journal under the temp directory, 500 ms reconnect, 60 s flush.
+     *
+     * @param host     the logger's receiver address
+     * @param port     the receiver port
+     * @param coreName the core's name for the logger
+     * @return the settings, with a journal directory of this process's own
+     */
     public static LoggerClientSettings defaults(String host, int port, String coreName) {
         Path dir = Path.of(System.getProperty("java.io.tmpdir"), "fdnet-journal-" + ProcessHandle.current().pid()
                 + "-" + System.nanoTime());
@@ -42,19 +62,47 @@ public record LoggerClientSettings(String host, int port, String coreName, int m
                 Duration.ofMillis(500), Duration.ofSeconds(60));
     }
 
+    /**
+     * These settings with another memory bound.
+     *
+     * @param events events kept in memory, at least 1000
+     * @return new settings
+     * @throws IllegalArgumentException when {@code events} is below 1000
+     */
     public LoggerClientSettings withMemoryEvents(int events) {
         return new LoggerClientSettings(host, port, coreName, events, journalDirectory, journalBytes, reconnectDelay, flushTimeout);
     }
 
+    /**
+     * These settings with another journal.
+     *
+     * @param directory where the journal lives
+     * @param bytes     its bound, at least 0
+     * @return new settings
+     * @throws IllegalArgumentException when {@code bytes} is negative
+     */
     public LoggerClientSettings withJournal(Path directory, long bytes) {
         return new LoggerClientSettings(host, port, coreName, memoryEvents, directory, bytes, reconnectDelay, flushTimeout);
     }
 
+    /**
+     * These settings with another flush timeout.
+     *
+     * @param timeout how long a flush and close wait for the logger's commits
+     * @return new settings
+     */
     public LoggerClientSettings withFlushTimeout(Duration timeout) {
         return new LoggerClientSettings(host, port, coreName, memoryEvents, journalDirectory, journalBytes, reconnectDelay, timeout);
     }
 
-    /** Parses {@code HOST:PORT} (the form of {@code fdnet run --logger}). */
+    /**
+     * Parses {@code HOST:PORT} (the form of {@code fdnet run --logger}).
+     *
+     * @param hostPort the address, e.g. {@code 127.0.0.1:5555}
+     * @param coreName the core's name for the logger
+     * @return the {@link #defaults} for that address
+     * @throws IllegalArgumentException when the text is not {@code HOST:PORT} or the port not a number in range
+     */
     public static LoggerClientSettings parseAddress(String hostPort, String coreName) {
         int colon = hostPort.lastIndexOf(':');
         if (colon <= 0 || colon == hostPort.length() - 1) {

@@ -39,6 +39,7 @@ public final class ResponsiveThreads {
      * Puts the calling thread in the real-time class; returns whether it is there now. Never throws.
      *
      * @param role what the thread does, for the one message when it cannot be done
+     * @return true when the thread now runs under {@code SCHED_FIFO}; false when it stays a normal thread
      */
     public static boolean raiseCurrent(String role) {
         String tid;

@@ -52,6 +52,16 @@ public final class ViewerClient implements AutoCloseable {
     private final Thread reader;
     private volatile IOException failure;
 
+    /**
+     * Connects and greets the logger's sender server (over TLS when this process speaks it, see
+     * {@link org.fdnet.tls.TransportSecurity}); waits at most 5 s for the connection.
+     *
+     * @param host            the sender server's address
+     * @param port            its port
+     * @param name            the viewer's name for the logger's client list
+     * @param monitorListener gets every monitored event, on the reader thread; keep it quick
+     * @throws IOException when the logger cannot be reached or refuses the viewer, saying why
+     */
     public ViewerClient(String host, int port, String name, Consumer<NetworkEvent> monitorListener) throws IOException {
         this.answers = new LoggerAnswers(monitorListener);
         socket = TransportSecurity.connect(host, port, 5000);
@@ -76,7 +86,13 @@ public final class ViewerClient implements AutoCloseable {
         reader.start();
     }
 
-    /** Nodes whose name matches: {@code ""} all, {@code Node} any module, {@code Module/Node} exactly. */
+    /**
+     * Nodes whose name matches: {@code ""} all, {@code Node} any module, {@code Module/Node} exactly.
+     *
+     * @param filter the name filter
+     * @return the matching nodes of every stream the logger holds
+     * @throws IOException when the connection is lost, the logger refuses, or it does not answer within 60 s
+     */
     public List<LoggedNode> nodes(String filter) throws IOException {
         int id = requests.incrementAndGet();
         List<Object> items = call(id, new LoggerAnswers.Request(null), ViewerRequest.listNodes(id, filter)::write);
@@ -85,7 +101,12 @@ public final class ViewerClient implements AutoCloseable {
         return nodes;
     }
 
-    /** Every stream of events the logger holds, with the network run each belongs to. */
+    /**
+     * Every stream of events the logger holds, with the network run each belongs to.
+     *
+     * @return the streams, from the logger's database (none while it is unavailable)
+     * @throws IOException when the connection is lost, the logger refuses, or it does not answer within 60 s
+     */
     public List<LoggedRun> runs() throws IOException {
         int id = requests.incrementAndGet();
         List<Object> items = call(id, new LoggerAnswers.Request(null), ViewerRequest.listRuns(id)::write);
@@ -94,7 +115,16 @@ public final class ViewerClient implements AutoCloseable {
         return runs;
     }
 
-    /** Every event of the nodes with {@code from <= time <= to}, in time order (cache and database merged). */
+    /**
+     * Every event of the nodes with {@code from <= time <= to}, in time order (cache and database merged).
+     *
+     * @param sourceIds the logger's node ids ({@link LoggedNode#sourceId()}), at most
+     *                  {@link org.fdnet.event.wire.ViewerRequest#MAX_NODES}
+     * @param from      the first time, µs since the epoch, inclusive
+     * @param to        the last time, µs since the epoch, inclusive
+     * @return the events, with the logger's source ids
+     * @throws IOException when the connection is lost, the logger refuses, or it does not answer within 60 s
+     */
     public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws IOException {
         List<Object> items = askHistory(MessageType.HISTORY, sourceIds, from, to, new LoggerAnswers.Request(null));
         List<NetworkEvent> events = new ArrayList<>(items.size());
@@ -105,6 +135,12 @@ public final class ViewerClient implements AutoCloseable {
     /**
      * The same answer as {@link #history}, as columns: times, source ids and numeric values without an object
      * or a String per event (numbers are 8 bytes on the wire, read in place) — the path for plotting.
+     *
+     * @param sourceIds the logger's node ids, as for {@link #history}
+     * @param from      the first time, µs since the epoch, inclusive
+     * @param to        the last time, µs since the epoch, inclusive
+     * @return the events as columns, in time order
+     * @throws IOException when the connection is lost, the logger refuses, or it does not answer within 60 s
      */
     public HistoryColumns historyColumns(int[] sourceIds, long from, long to) throws IOException {
         LoggerAnswers.Request r = new LoggerAnswers.Request(new HistoryColumns());
@@ -117,12 +153,22 @@ public final class ViewerClient implements AutoCloseable {
         return call(id, r, ViewerRequest.history(type, id, sourceIds, from, to)::write);
     }
 
-    /** Starts streaming the nodes' new events to the listener. */
+    /**
+     * Starts streaming the nodes' new events to the listener.
+     *
+     * @param sourceIds the logger's node ids
+     * @throws IOException when the connection is lost or the request cannot be sent
+     */
     public void monitor(int... sourceIds) throws IOException {
         send(ViewerRequest.monitor(MessageType.MONITOR, sourceIds)::write);
     }
 
-    /** Stops streaming the nodes (none given: all). */
+    /**
+     * Stops streaming the nodes (none given: all).
+     *
+     * @param sourceIds the logger's node ids; none for every monitored node
+     * @throws IOException when the connection is lost or the request cannot be sent
+     */
     public void unmonitor(int... sourceIds) throws IOException {
         send(ViewerRequest.monitor(MessageType.UNMONITOR, sourceIds)::write);
     }

@@ -36,12 +36,25 @@ public final class EventCodec {
      */
     @FunctionalInterface
     public interface SourceIdMap {
+        /**
+         * The id to keep for an id read from the wire.
+         *
+         * @param sourceIdOnWire the event's source id as the sender numbered it
+         * @return the reader's id for the same node
+         * @throws InterruptedException when the thread is interrupted while waiting for ids
+         */
         int map(int sourceIdOnWire) throws InterruptedException;
     }
 
     private EventCodec() {
     }
 
+    /**
+     * Appends one event to the frame {@code w} is building.
+     *
+     * @param w     a writer inside an EVENTS, HISTORY_CHUNK or MONITOR_EVENTS frame
+     * @param event the event, of any of the four kinds
+     */
     public static void write(FrameWriter w, NetworkEvent event) {
         if (event instanceof DataValueEvent d) {
             head(w, DATA, d);
@@ -61,7 +74,13 @@ public final class EventCodec {
         }
     }
 
-    /** The same event with another source id: the logger maps a core's ids to global ones. */
+    /**
+     * The same event with another source id: the logger maps a core's ids to global ones.
+     *
+     * @param event    the event as received
+     * @param sourceId the id to give it
+     * @return a new event of the same kind, time and content
+     */
     public static NetworkEvent withSource(NetworkEvent event, int sourceId) {
         if (event instanceof DataValueEvent d) {
             return d.withSource(sourceId);
@@ -78,6 +97,14 @@ public final class EventCodec {
         w.putEventHead(kind, e.sourceId(), e.time());
     }
 
+    /**
+     * Reads one event at the frame's cursor.
+     *
+     * @param f a frame positioned on an event
+     * @return the event, with the source id as sent
+     * @throws ProtocolException when the kind, value type, command or node kind is unknown, or the payload ends
+     *                           inside the event
+     */
     public static NetworkEvent read(Frame f) throws ProtocolException {
         int kind = f.getByte();
         int source = f.getInt();
@@ -89,6 +116,12 @@ public final class EventCodec {
      * One event, built with {@code sources.map(id on the wire)} as its source id: what {@link #read(Frame)} then
      * {@link #withSource} give, with one object instead of two. The frame should have passed {@link #skip} first
      * when nothing may be mapped for a malformed frame.
+     *
+     * @param f       a frame positioned on an event
+     * @param sources maps the source id on the wire to the one the event gets
+     * @return the event, with the mapped source id
+     * @throws ProtocolException    as {@link #read(Frame)}
+     * @throws InterruptedException when {@code sources} is interrupted while waiting
      */
     public static NetworkEvent read(Frame f, SourceIdMap sources) throws ProtocolException, InterruptedException {
         int kind = f.getByte();
@@ -100,6 +133,9 @@ public final class EventCodec {
     /**
      * Steps over one event, checking it exactly as {@link #read(Frame)} does (kind, value type, command, node
      * kind, every length) without building it: a receiver checks a whole frame before it takes any event.
+     *
+     * @param f a frame positioned on an event; left on the next one
+     * @throws ProtocolException when the event is malformed, as {@link #read(Frame)} would say
      */
     public static void skip(Frame f) throws ProtocolException {
         int kind = f.getByte();

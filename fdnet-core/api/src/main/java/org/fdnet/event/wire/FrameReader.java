@@ -14,12 +14,27 @@ public final class FrameReader {
     private final DataInputStream in;
     private final int maxFrameBytes;
 
+    /**
+     * A reader of {@code in}.
+     *
+     * @param in            the stream, read with no buffering of its own (wrap a socket's stream in a buffer)
+     * @param maxFrameBytes the largest frame (type byte and payload) accepted, e.g.
+     *                      {@link Protocol#DEFAULT_MAX_FRAME_BYTES}
+     */
     public FrameReader(InputStream in, int maxFrameBytes) {
         this.in = new DataInputStream(in);
         this.maxFrameBytes = maxFrameBytes;
     }
 
-    /** The next frame, or {@code null} when the peer closed the stream cleanly between frames. */
+    /**
+     * The next frame, or {@code null} when the peer closed the stream cleanly between frames. Blocks until a whole
+     * frame has arrived.
+     *
+     * @return the frame, its cursor at the payload's start; or null at a clean end
+     * @throws ProtocolException when the length is outside 1 to the maximum, the type is unknown, or the stream ends
+     *                           inside a frame
+     * @throws IOException       when reading the stream fails
+     */
     public Frame read() throws IOException {
         int b0 = in.read();
         if (b0 < 0) {

@@ -13,22 +13,44 @@ public final class FrameWriter {
     private byte[] buf = new byte[8192];
     private int pos;
 
+    /**
+     * Starts a new frame, dropping whatever the previous one held.
+     *
+     * @param type the frame's type
+     * @return this writer, for the put calls
+     */
     public FrameWriter begin(MessageType type) {
         pos = 4;
         return putByte(type.code());
     }
 
-    /** Bytes written since {@link #begin}, the type byte included. */
+    /**
+     * Bytes written since {@link #begin}, the type byte included.
+     *
+     * @return the frame's length as its prefix will say
+     */
     public int frameLength() {
         return pos - 4;
     }
 
+    /**
+     * Puts a {@code u8}.
+     *
+     * @param v the value; only its low 8 bits are written
+     * @return this writer
+     */
     public FrameWriter putByte(int v) {
         ensure(1);
         buf[pos++] = (byte) v;
         return this;
     }
 
+    /**
+     * Puts a big-endian {@code u16}.
+     *
+     * @param v the value; only its low 16 bits are written
+     * @return this writer
+     */
     public FrameWriter putShort(int v) {
         ensure(2);
         buf[pos++] = (byte) (v >>> 8);
@@ -36,6 +58,12 @@ public final class FrameWriter {
         return this;
     }
 
+    /**
+     * Puts a big-endian {@code i32}.
+     *
+     * @param v the value
+     * @return this writer
+     */
     public FrameWriter putInt(int v) {
         ensure(4);
         buf[pos++] = (byte) (v >>> 24);
@@ -45,6 +73,12 @@ public final class FrameWriter {
         return this;
     }
 
+    /**
+     * Puts a big-endian {@code i64}.
+     *
+     * @param v the value
+     * @return this writer
+     */
     public FrameWriter putLong(long v) {
         putInt((int) (v >>> 32));
         return putInt((int) v);
@@ -53,6 +87,9 @@ public final class FrameWriter {
     /**
      * {@code u32 byteLength, UTF-8 bytes}. ASCII (the common case) is copied in one pass, room reserved once;
      * the first non-ASCII character falls back to the encoder.
+     *
+     * @param s the string, not null
+     * @return this writer
      */
     public FrameWriter putString(String s) {
         int n = s.length();
@@ -81,7 +118,14 @@ public final class FrameWriter {
         return this;
     }
 
-    /** {@code u8 kind, i32 source, i64 time}: an event's head, room reserved once. */
+    /**
+     * {@code u8 kind, i32 source, i64 time}: an event's head, room reserved once.
+     *
+     * @param kind   the event kind, 1 to 4 ({@link EventCodec})
+     * @param source the event's source id
+     * @param time   the event's time, µs since the epoch
+     * @return this writer
+     */
     public FrameWriter putEventHead(int kind, int source, long time) {
         ensure(13);
         byte[] b = buf;
@@ -105,17 +149,31 @@ public final class FrameWriter {
         return this;
     }
 
-    /** Where the next byte goes: a mark for {@link #bytesSince}. */
+    /**
+     * Where the next byte goes: a mark for {@link #bytesSince}.
+     *
+     * @return an offset in the frame being built
+     */
     public int position() {
         return pos;
     }
 
-    /** A copy of what was put since {@code mark} (from {@link #position}): an encoding to keep and reuse. */
+    /**
+     * A copy of what was put since {@code mark} (from {@link #position}): an encoding to keep and reuse.
+     *
+     * @param mark what {@link #position} returned, in the same frame
+     * @return a new array
+     */
     public byte[] bytesSince(int mark) {
         return Arrays.copyOfRange(buf, mark, pos);
     }
 
-    /** Bytes already encoded (e.g. an event kept from {@link #bytesSince}), copied as they are. */
+    /**
+     * Bytes already encoded (e.g. an event kept from {@link #bytesSince}), copied as they are.
+     *
+     * @param bytes the encoding, no length prefix added
+     * @return this writer
+     */
     public FrameWriter putBytes(byte[] bytes) {
         ensure(bytes.length);
         System.arraycopy(bytes, 0, buf, pos, bytes.length);
@@ -123,7 +181,12 @@ public final class FrameWriter {
         return this;
     }
 
-    /** Writes the frame built since {@link #begin}; the stream is not flushed. */
+    /**
+     * Writes the frame built since {@link #begin}; the stream is not flushed.
+     *
+     * @param out the connection's stream
+     * @throws IOException when writing fails
+     */
     public void writeTo(OutputStream out) throws IOException {
         int length = pos - 4;
         buf[0] = (byte) (length >>> 24);
@@ -133,7 +196,11 @@ public final class FrameWriter {
         out.write(buf, 0, pos);
     }
 
-    /** The frame as bytes (length prefix included): for journals and tests. */
+    /**
+     * The frame as bytes (length prefix included): for journals and tests.
+     *
+     * @return a new array, as {@link #writeTo} would write it
+     */
     public byte[] toBytes() {
         int length = pos - 4;
         byte[] copy = Arrays.copyOf(buf, pos);

@@ -42,7 +42,11 @@ public final class HistoryColumns {
     private long[] numberBits = new long[16];
     private NetworkEvent[] decoded;
 
-    /** Makes room for {@code more} events (a chunk's count) at once. */
+    /**
+     * Makes room for {@code more} events (a chunk's count) at once.
+     *
+     * @param more how many events are about to be appended
+     */
     public void reserve(int more) {
         int need = size + more;
         if (need > times.length) {
@@ -60,6 +64,10 @@ public final class HistoryColumns {
     /**
      * Reads the frame's next {@code n} events into the columns: a Data's number (the usual content of a plot's
      * answer) straight from the frame's array, 22 bytes each; anything else through {@link #append}.
+     *
+     * @param f a frame positioned on its first event, e.g. a checked HISTORY_CHUNK
+     * @param n how many events to read
+     * @throws ProtocolException when an event is malformed
      */
     public void appendAll(Frame f, int n) throws ProtocolException {
         reserve(n);
@@ -80,7 +88,12 @@ public final class HistoryColumns {
         }
     }
 
-    /** Reads the frame's next event (the {@link EventCodec} layout) into the columns. */
+    /**
+     * Reads the frame's next event (the {@link EventCodec} layout) into the columns.
+     *
+     * @param f a frame positioned on an event
+     * @throws ProtocolException when the event is malformed
+     */
     public void append(Frame f) throws ProtocolException {
         reserve(1);
         NetworkEvent e = EventCodec.read(f);
@@ -100,31 +113,66 @@ public final class HistoryColumns {
         size++;
     }
 
+    /**
+     * How many events the columns hold.
+     *
+     * @return the count; valid indexes are 0 to this minus one
+     */
     public int size() {
         return size;
     }
 
-    /** Moves each event's time back by its source's offset (a viewer putting every host on one time axis). */
+    /**
+     * Moves each event's time back by its source's offset (a viewer putting every host on one time axis).
+     *
+     * @param offsetOfSource the clock offset of a source's host, µs ahead of the coordinator
+     */
     public void shiftTimes(java.util.function.IntToLongFunction offsetOfSource) {
         for (int i = 0; i < size; i++) {
             times[i] -= offsetOfSource.applyAsLong(sources[i]);
         }
     }
 
+    /**
+     * Event {@code i}'s time.
+     *
+     * @param i the event's index
+     * @return µs since the epoch (shifted, after {@link #shiftTimes})
+     * @throws IndexOutOfBoundsException when {@code i} is outside 0 to {@link #size()} minus one
+     */
     public long time(int i) {
         return times[check(i)];
     }
 
+    /**
+     * Event {@code i}'s source.
+     *
+     * @param i the event's index
+     * @return the logger's id of the node
+     * @throws IndexOutOfBoundsException when {@code i} is outside 0 to {@link #size()} minus one
+     */
     public int sourceId(int i) {
         return sources[check(i)];
     }
 
-    /** Whether event {@code i} is a Data's value. */
+    /**
+     * Whether event {@code i} is a Data's value.
+     *
+     * @param i the event's index
+     * @return true for a Data value of any type
+     * @throws IndexOutOfBoundsException when {@code i} is out of range
+     */
     public boolean isDataValue(int i) {
         return numberTypes[check(i)] != 0 || decoded[i] instanceof DataValueEvent;
     }
 
-    /** The value type of a Data's value; {@code null} for any other event. */
+    /**
+     * The value type of a Data's value; {@code null} for any other event.
+     *
+     * @param i the event's index
+     * @return the type, or null
+     * @throws IndexOutOfBoundsException when {@code i} is out of range
+     */
     public ValueType valueType(int i) {
         if (numberTypes[check(i)] != 0) {
             return ValueType.fromCode(numberTypes[i]);
@@ -132,12 +180,24 @@ public final class HistoryColumns {
         return decoded[i] instanceof DataValueEvent d ? d.type() : null;
     }
 
-    /** Whether {@link #number} holds the value: a Data's {@code LONG} or {@code DOUBLE} value. */
+    /**
+     * Whether {@link #number} holds the value: a Data's {@code LONG} or {@code DOUBLE} value.
+     *
+     * @param i the event's index
+     * @return true when {@link #number} may be called
+     * @throws IndexOutOfBoundsException when {@code i} is out of range
+     */
     public boolean hasNumber(int i) {
         return numberTypes[check(i)] != 0;
     }
 
-    /** The value as a double (only when {@link #hasNumber}). */
+    /**
+     * The value as a double (only when {@link #hasNumber}).
+     *
+     * @param i the event's index
+     * @return the number, read in place
+     * @throws IllegalStateException when event {@code i} has no number
+     */
     public double number(int i) {
         if (!hasNumber(i)) {
             throw new IllegalStateException("event " + i + " has no numeric value");
@@ -145,7 +205,13 @@ public final class HistoryColumns {
         return numberTypes[i] == DOUBLE ? Double.longBitsToDouble(numberBits[i]) : numberBits[i];
     }
 
-    /** A Data's or Relation's value as text (made now); {@code null} for commands and node names. */
+    /**
+     * A Data's or Relation's value as text (made now); {@code null} for commands and node names.
+     *
+     * @param i the event's index
+     * @return the value's text form, or null
+     * @throws IndexOutOfBoundsException when {@code i} is out of range
+     */
     public String text(int i) {
         if (numberTypes[check(i)] != 0) {
             return typed(i).text();
@@ -157,7 +223,14 @@ public final class HistoryColumns {
         return e instanceof RelationValueEvent r ? r.value() : null;
     }
 
-    /** Event {@code i} as an object (made now for numbers). */
+    /**
+     * Event {@code i} as an object (made now for numbers).
+     *
+     * @param i the event's index
+     * @return the event: a number's made now, with the time {@link #time} gives; any other as decoded, with its time as
+     *         the logger sent it (not shifted)
+     * @throws IndexOutOfBoundsException when {@code i} is out of range
+     */
     public NetworkEvent event(int i) {
         if (numberTypes[check(i)] != 0) {
             return new DataValueEvent(sources[i], times[i], typed(i));
@@ -169,7 +242,11 @@ public final class HistoryColumns {
         return numberTypes[i] == DOUBLE ? TypedValue.of(Double.longBitsToDouble(numberBits[i])) : TypedValue.of(numberBits[i]);
     }
 
-    /** Every event as an object, in order. */
+    /**
+     * Every event as an object, in order.
+     *
+     * @return a new list; each number's event is made now
+     */
     public List<NetworkEvent> events() {
         List<NetworkEvent> out = new ArrayList<>(size);
         for (int i = 0; i < size; i++) {

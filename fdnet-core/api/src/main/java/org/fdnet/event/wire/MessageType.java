@@ -43,6 +43,11 @@ public enum MessageType {
         this.code = code;
     }
 
+    /**
+     * The type's byte on the wire.
+     *
+     * @return the code, fixed for each type
+     */
     public int code() {
         return code;
     }
@@ -55,7 +60,13 @@ public enum MessageType {
         }
     }
 
-    /** The type of a code, or a {@link ProtocolException} naming the unknown code. */
+    /**
+     * The type of a code, or a {@link ProtocolException} naming the unknown code.
+     *
+     * @param code a frame's first byte, 0 to 255
+     * @return its type
+     * @throws ProtocolException when no type has that code
+     */
     public static MessageType of(int code) throws ProtocolException {
         MessageType t = code >= 0 && code < 256 ? BY_CODE[code] : null;
         if (t == null) {

@@ -9,13 +9,16 @@ package org.fdnet.event.wire;
 public final class Protocol {
     /** {@code "FDNL"}: the first four payload bytes of every HELLO. */
     public static final int MAGIC = 0x46444E4C;
+    /** The protocol version this code speaks; a peer of another version is refused. */
     public static final int VERSION = 2;
     /** Largest frame (type byte + payload) a peer may send unless configured otherwise: 1 MiB. */
     public static final int DEFAULT_MAX_FRAME_BYTES = 1 << 20;
     /** The events one EVENTS frame carries at most: keeps frames well under the default maximum. */
     public static final int MAX_EVENTS_PER_FRAME = 2048;
 
+    /** A HELLO's role of a core: it sends events. */
     public static final int ROLE_CORE = 1;
+    /** A HELLO's role of a viewer: it asks for history and monitors. */
     public static final int ROLE_VIEWER = 2;
 
     private Protocol() {

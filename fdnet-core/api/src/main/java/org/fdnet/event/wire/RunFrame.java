@@ -10,11 +10,20 @@ import org.fdnet.event.RunIdentity;
  * far that host's clock is ahead of the run's coordinator's (µs, measured by the coordinator). A core
  * that knows its run sends it right after WELCOME, on every connection, before any EVENTS; the logger records
  * it idempotently, so a resend after a reconnect changes nothing.
+ *
+ * @param run               the network run
+ * @param host              the host this core is
+ * @param clockOffsetMicros how far this host's clock is ahead of the coordinator's, µs (negative: behind)
  */
 public record RunFrame(RunIdentity run, String host, long clockOffsetMicros) {
     /** At most this many hosts in one run (a malformed frame cannot make the logger allocate more). */
     public static final int MAX_HOSTS = 4096;
 
+    /**
+     * Appends this frame to {@code w}.
+     *
+     * @param w the writer to add the frame to
+     */
     public void write(FrameWriter w) {
         w.begin(MessageType.RUN).putLong(run.id().getMostSignificantBits()).putLong(run.id().getLeastSignificantBits())
                 .putString(run.network()).putString(host).putLong(clockOffsetMicros).putLong(run.startedMicros()).putString(run.sha256())
@@ -23,6 +32,14 @@ public record RunFrame(RunIdentity run, String host, long clockOffsetMicros) {
         w.putString(run.definition());
     }
 
+    /**
+     * Reads a RUN frame's payload.
+     *
+     * @param f a frame of type RUN, its cursor at the payload's start
+     * @return the run, host and clock offset
+     * @throws ProtocolException when the payload is malformed, names more than {@link #MAX_HOSTS} hosts, or has
+     *                           trailing bytes
+     */
     public static RunFrame read(Frame f) throws ProtocolException {
         UUID id = new UUID(f.getLong(), f.getLong());
         String network = f.getString();

@@ -26,6 +26,12 @@ public final class ValueCodec {
     private ValueCodec() {
     }
 
+    /**
+     * Appends one value to the frame {@code w} is building.
+     *
+     * @param w a writer inside a frame
+     * @param v the value
+     */
     public static void write(FrameWriter w, TypedValue v) {
         ValueType type = v.type();
         w.putByte(type.code());
@@ -51,6 +57,14 @@ public final class ValueCodec {
         }
     }
 
+    /**
+     * Reads one value at the frame's cursor.
+     *
+     * @param f a frame positioned on a value
+     * @return the value, of the type the frame names; the cursor is after it
+     * @throws ProtocolException when the value type is unknown, a boolean is neither 0 nor 1, or the payload ends
+     *                           inside the value
+     */
     public static TypedValue read(Frame f) throws ProtocolException {
         ValueType type = valueType(f, f.getByte());
         return switch (type) {
@@ -76,7 +90,13 @@ public final class ValueCodec {
         };
     }
 
-    /** Steps over one value, checking it exactly as {@link #read} does, and answers its type. */
+    /**
+     * Steps over one value, checking it exactly as {@link #read} does, and answers its type.
+     *
+     * @param f a frame positioned on a value; left after it
+     * @return the value's type
+     * @throws ProtocolException when the value is malformed, as {@link #read} would say
+     */
     public static ValueType skip(Frame f) throws ProtocolException {
         ValueType type = valueType(f, f.getByte());
         switch (type) {

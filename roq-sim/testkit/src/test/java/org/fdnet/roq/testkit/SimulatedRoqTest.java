@@ -5,6 +5,9 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 import org.junit.jupiter.api.Test;
 
 class SimulatedRoqTest {
@@ -18,6 +21,21 @@ class SimulatedRoqTest {
 
         assertThat(second).isEqualTo(first);
         assertThat(otherNoise).as("another noise seed gives another robot").isNotEqualTo(first);
+    }
+
+    @Test
+    void shouldGiveTheSameRobotWhenRunsShareTheProcessInParallel() throws Exception {
+        String alone = hashAfter(6, 2);
+        ExecutorService pool = Executors.newFixedThreadPool(2);
+        try {
+            Future<String> first = pool.submit(() -> hashAfter(6, 2));
+            Future<String> second = pool.submit(() -> hashAfter(6, 2));
+
+            assertThat(first.get()).isEqualTo(alone);
+            assertThat(second.get()).isEqualTo(alone);
+        } finally {
+            pool.shutdownNow();
+        }
     }
 
     private static String hashAfter(long noise, int seconds) {

@@ -415,7 +415,8 @@ public final class SimulatedRoq implements AutoCloseable {
         }
 
         /**
-         * @param seed the sensor-noise seed (noise is always on; the seed makes it repeatable)
+         * @param seed the sensor-noise seed (noise is on unless {@link #withoutNoise()} turns it off; the seed makes
+         *             it repeatable)
          * @return this
          */
         public Builder noise(long seed) {

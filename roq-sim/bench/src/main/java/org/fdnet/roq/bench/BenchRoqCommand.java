@@ -353,8 +353,8 @@ public final class BenchRoqCommand implements Callable<Integer> {
         System.out.println("  " + measured);
         System.out.printf(Locale.ROOT, "baseline: plant alone, same course   %6.1f× real time (%.2f wall s)%n", plant,
                 plantNanos / 1e9);
-        System.out.printf(Locale.ROOT, "robot test (SimulatedRoq)            %6.1f× real time (%.2f wall s; target ≥ 10×:"
-                + " %s)%n", test, testNanos / 1e9, test >= 10 ? "met" : "NOT met");
+        System.out.printf(Locale.ROOT, "robot test (SimulatedRoq)            %6.1f× real time (%.2f wall s; target"
+                + " ≥ 10×: %s)%n", test, testNanos / 1e9, test >= 10 ? "met" : "NOT met");
     }
 
     /** 1000 ticks as the bridge steps them, without a network: step, read, send. Returns nanoseconds. */

@@ -95,7 +95,8 @@ final class BreakthroughSweep {
         List<Future<MeasuredWalk>> unprobed = new ArrayList<>();
         try {
             for (long noise : noises) {
-                probed.add(pool.submit(() -> MeasuredWalk.of("noise " + noise, network, course, seconds, noise, unloaded)));
+                probed.add(pool.submit(() -> MeasuredWalk.of("noise " + noise, network, course, seconds, noise,
+                        unloaded)));
             }
             for (long noise : noises) {
                 unprobed.add(pool.submit(() -> MeasuredWalk.of("noise " + noise + ", Probing unloaded", network, course,

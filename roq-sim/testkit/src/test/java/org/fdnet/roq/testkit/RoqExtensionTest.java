@@ -43,7 +43,8 @@ class RoqExtensionTest {
         }
 
         @Test
-        void readsThePlantExactly(@Roq(network = "../../networks/roq-rubble.fdn", sensorNoise = false) SimulatedRoq roq) {
+        void readsThePlantExactly(
+                @Roq(network = "../../networks/roq-rubble.fdn", sensorNoise = false) SimulatedRoq roq) {
             exactName = roq.name();
         }
 

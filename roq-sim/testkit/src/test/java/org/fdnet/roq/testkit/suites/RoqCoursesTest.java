@@ -21,11 +21,11 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * roq-rubble.fdn (and roq-walk.fdn on level ground) on every built-in course and on courses it was not tuned on —
- * five rubble seeds with blocks up to 6 cm, 15° up and down — with seeded sensor noise as in the demo. Every run must
- * keep RoQ up, break at most the stated number of cells under a loaded foot (up to 2 a run on {@code fragile} and
- * {@code crossing}, see below), stay near its course line and heading (averaged over a crawl cycle), tilt no more than
- * the ground asks, and walk at least a distance set 20 % or more below the median measured over these runs
+ * roq-rubble.fdn (and roq-walk.fdn on level ground) on every built-in course and on courses it was not tuned on — five
+ * rubble seeds with blocks up to 6 cm, 15° up and down — with seeded sensor noise as in the demo. Every run must keep
+ * RoQ up, break at most the stated number of cells under a loaded foot (up to 2 a run on {@code fragile} and
+ * {@code crossing}, see below), stay near its course line and heading (averaged over a crawl cycle), tilt no more than the
+ * ground asks, and walk at least a distance set 20 % or more below the median measured over these runs
  * (docs/roq-networks.md lists the measured figures; every row was also run on eight noise seeds and every bound held
  * except the two comparisons, which therefore run on several noise seeds: Posture on 18° down, Course as a mean over
  * eight). The runs are independent simulated robots, two at a time.
@@ -198,8 +198,8 @@ class RoqCoursesTest {
 
     @Test
     void shouldStayCloserToItsCourseLineWithModuleCourseThanWithout() throws Exception {
-        // measured over 3.0-3.5 m on these eight noise seeds: off the line 0.13-0.30 m with Course (mean 0.23), 0.18-0.91
-        // m without (mean 0.48): 0.48x, and the bound is 0.75x. Run by run the comparison failed on three of them
+        // measured over 3.0-3.5 m on these eight noise seeds: off the line 0.13-0.30 m with Course (mean 0.23),
+        // 0.18-0.91 m without (mean 0.48): 0.48x, and the bound is 0.75x. Run by run the comparison failed on three of them
         // (Course did worse than none on two): the crawl's sideways slip, which Course does not sense, is as large as
         // the heading's drift over 3 m, so only the means compare.
         SoftAssertions soft = new SoftAssertions();

@@ -14,7 +14,8 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "fdnet", mixinStandardHelpOptions = true, version = "FDNet 0.1.0",
         description = "Flat Distributed Network: define, check, run and observe FDNetworks.",
-        subcommands = {ValidateCommand.class, InfoCommand.class, FmtCommand.class, KeysCommand.class})
+        subcommands = {ValidateCommand.class, InfoCommand.class, FmtCommand.class, KeysCommand.class, SdkCommand.class,
+            NewCommand.class})
 public final class FdnetCommand implements Runnable {
     @Spec
     CommandSpec spec;

@@ -5,6 +5,8 @@
  *
  * <pre>
  *   bin/fdnet ──▶ FdnetCommand.main ──▶ core commands (validate, info, fmt, keys)
+ *                        ├── sdk install ──▶ MavenRun(mvn -B install in fdnet.home) ──▶ InstallProgress: a line per module
+ *                        ├── new nodes DIR ──▶ MavenRun(mvn -B -o archetype:generate, FDNet's archetype) ──▶ DIR
  *                        │
  *                        ├── ServiceLoader&lt;CommandProvider&gt; ──▶ commands of every module (run, host, logger, demo, ...)
  *                        └── bench (BenchCommand names none) ──▶ benchmarks of every bench module

@@ -7,6 +7,7 @@ import org.fdnet.logger.cache.CacheLimits;
 import org.fdnet.logger.cache.CacheStatus;
 import org.fdnet.logger.cache.EventCache;
 import org.fdnet.logger.config.LoggerConfig;
+import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.logger.server.Servers;
 import org.fdnet.logger.server.TcpServer;
 import org.fdnet.logger.server.ViewerService;
@@ -99,6 +100,24 @@ public final class NetworkStateLogger implements AutoCloseable {
     private void giveUp() {
         Thread t = new Thread(this::stop, "fdnet-logger-stop");
         t.start();
+    }
+
+    /**
+     * Changes a setting while the logger runs: a {@link LoggerSetting#live() live} one is checked and applied at
+     * once; any other is refused (it takes effect at the next start).
+     *
+     * @throws IllegalArgumentException naming the setting and why its value is refused
+     * @throws IllegalStateException for a setting that is not live
+     */
+    public void applyLive(LoggerSetting setting, String value) {
+        if (!setting.live()) {
+            throw new IllegalStateException(setting.key() + " takes effect at the next start");
+        }
+        config.setLive(setting, value);
+        BatchWriter w = writer;
+        if (w != null) {
+            w.retune(WriterSettings.of(config));
+        }
     }
 
     public int receiverPort() {

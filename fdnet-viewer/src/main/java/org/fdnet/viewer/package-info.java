@@ -4,11 +4,12 @@
  *
  * <pre>
  *   network ─LoggerClient─▶ logger (cache + PostgreSQL) ─sender server─▶ source.LoggerConnection / Replay
- *        ─▶ data.PlotData (Series per number) ─▶ ui.PlotPanel (one canvas) in ui.ViewerWindow
+ *        ─▶ data.PlotData (Series per number) ─▶ ui.PlotGrid (plots on one time axis) in ui.ViewerWindow
+ *   layout.ViewerLayout (file, or RoQ's ready one) ⇄ ui.PlotGrid
  * </pre>
  *
- * Packages: {@code data} (series), {@code source} (logger connection, replay), {@code ui} (window, plot,
- * CSV export), {@code cli} ({@code fdnet viewer}; {@code fdnet bench viewer} is fdnet-viewer/bench's). Public API for the editor:
+ * Packages: {@code data} (series, units), {@code source} (logger connection, replay), {@code ui} (window, plots,
+ * node tree, CSV export), {@code layout} (layout files and the shipped layouts), {@code cli} ({@code fdnet viewer}; {@code fdnet bench viewer} is fdnet-viewer/bench's). Public API for the editor:
  * {@link org.fdnet.viewer.ui.ViewerWindow#open(String, java.util.List)}.
  */
 package org.fdnet.viewer;

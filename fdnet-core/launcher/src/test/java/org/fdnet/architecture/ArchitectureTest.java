@@ -112,7 +112,7 @@ class ArchitectureTest {
                 .whereLayer("Commands").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine", "Control",
                         "Distribution")
                 .whereLayer("Logger").mayOnlyAccessLayers("Api")
-                .whereLayer("Viewer").mayOnlyAccessLayers("Api")
+                .whereLayer("Viewer").mayOnlyAccessLayers("Api", "Logger") // Export…: the logger's MCAP and CSV writers
                 .whereLayer("Editor").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine", "Control",
                         "Distribution", "Commands", "Viewer")
                 .whereLayer("Simulator").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine",

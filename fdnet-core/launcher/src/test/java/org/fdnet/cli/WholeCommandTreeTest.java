@@ -15,12 +15,14 @@ class WholeCommandTreeTest {
     @Test
     void shouldOfferEveryPartsCommands() {
         assertThat(fdnet.getSubcommands()).containsKeys("validate", "info", "fmt", "keys", "run", "naming", "host",
-                "control", "logger", "viewer", "hi", "sim", "demo", "soak", "bench");
+                "control", "logger", "export", "viewer", "hi", "sim", "demo", "soak", "bench", "sdk", "new");
+        assertThat(fdnet.getSubcommands().get("sdk").getSubcommands()).containsKey("install");
+        assertThat(fdnet.getSubcommands().get("new").getSubcommands()).containsKey("nodes");
     }
 
     @Test
     void shouldOfferEveryBenchModulesBenchmarks() {
         assertThat(fdnet.getSubcommands().get("bench").getSubcommands())
-                .containsOnlyKeys("load", "core", "corba", "logger", "viewer", "hi", "rt", "sim", "roq");
+                .containsOnlyKeys("load", "core", "corba", "logger", "export", "viewer", "hi", "rt", "sim", "roq");
     }
 }

@@ -28,6 +28,15 @@ class EditorWindowGuiTest {
     }
 
     @Test
+    void shouldShowEveryControlWholeAtTheDefaultSize(RealDisplay display, @TempDir Path dir) throws Exception {
+        Path fdn = dir.resolve("roq-rubble.fdn");
+        Files.copy(NETWORKS.resolve("roq-rubble.fdn"), fdn);
+        Files.copy(NETWORKS.resolve("roq-rubble.fdg"), dir.resolve("roq-rubble.fdg"));
+        String output = runScenario(display.java(EditorVisibilityScenario.class, fdn.toString()), dir);
+        assertThat(output).contains("SIZE 1280x800", "SCENARIO PASSED").doesNotContain("PROBLEM");
+    }
+
+    @Test
     void shouldOpenAFileWithProblemsReadOnlyAndJumpToEachProblemsLine(RealDisplay display, @TempDir Path dir) throws Exception {
         Path bad = dir.resolve("bad.fdn");
         Files.writeString(bad, String.join("\n", "<?xml version=\"1.0\"?>", "<cnet name=\"bad\">",

@@ -146,8 +146,8 @@ public final class LiveEditorScenario {
             }
             return false;
         });
-        waitFor("the viewer draws both Datas' values", () -> viewer.get().livePlot().data().series().size() == 2
-                && viewer.get().livePlot().data().acceptedEvents() > 20);
+        waitFor("the viewer draws both Datas' values", () -> viewer.get().liveData().series().size() == 2
+                && viewer.get().liveData().acceptedEvents() > 20);
         check(Arrays.stream(Window.getWindows()).noneMatch(w -> w instanceof JDialog d && d.isShowing()
                 && d.getTitle().startsWith("Plot")), "no dialog asked for the logger's address");
         check(edt(() -> window.status().message()).contains(loggerAddress), "the status bar names the run's logger");

@@ -2,9 +2,7 @@ package org.fdnet.hi.live;
 
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
-import javax.swing.SwingUtilities;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
@@ -12,6 +10,7 @@ import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.Parameter;
 import org.fdnet.runtime.engine.RuntimeOptions;
 import org.fdnet.runtime.engine.RuntimeStartException;
+import org.fdnet.testing.OnEdt;
 
 /**
  * The network the live tests run in their own JVM: module Wave (a 50 ms sine into Wave/signal), main/Gain
@@ -46,20 +45,9 @@ public final class LiveTestNetwork {
         return InProcessRun.start(definition(), RuntimeOptions.defaults().workerThreads(2));
     }
 
+    /** Calls on the Swing thread ({@link OnEdt}). */
     public static <T> T edt(Callable<T> call) throws Exception {
-        AtomicReference<T> result = new AtomicReference<>();
-        AtomicReference<Exception> failure = new AtomicReference<>();
-        SwingUtilities.invokeAndWait(() -> {
-            try {
-                result.set(call.call());
-            } catch (Exception e) {
-                failure.set(e);
-            }
-        });
-        if (failure.get() != null) {
-            throw failure.get();
-        }
-        return result.get();
+        return OnEdt.call(call);
     }
 
     /** Waits, checking on the Swing thread, until {@code condition} holds; false after 10 s. */

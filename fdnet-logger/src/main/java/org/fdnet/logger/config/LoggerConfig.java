@@ -40,6 +40,29 @@ public final class LoggerConfig {
         return this;
     }
 
+    /**
+     * Changes a {@link LoggerSetting#live() live} setting, also while sealed (the running logger reads it again);
+     * any other setting is refused while sealed, as by {@link #set}.
+     */
+    public synchronized LoggerConfig setLive(LoggerSetting setting, String value) {
+        if (!setting.live()) {
+            return set(setting, value);
+        }
+        String v = value == null ? "" : value.trim();
+        validate(setting, v);
+        values.put(setting, v);
+        return this;
+    }
+
+    /**
+     * Checks one value against its setting's rule without keeping it (the panel checks as the user types).
+     *
+     * @throws IllegalArgumentException with the same message {@link #set} gives
+     */
+    public static void check(LoggerSetting setting, String value) {
+        validate(setting, value == null ? "" : value.trim());
+    }
+
     public synchronized String get(LoggerSetting setting) {
         return values.get(setting);
     }

@@ -19,6 +19,9 @@ import org.fdnet.logger.config.LoggerConfig;
 
 /** The window around the {@link LoggerPanel}, and its off-screen rendering for the documentation. */
 public final class LoggerFrame {
+    /** The window's size when it opens: the panel shows every field at this size. */
+    public static final Dimension DEFAULT_SIZE = new Dimension(1024, 700);
+
     private LoggerFrame() {
     }
 
@@ -43,7 +46,8 @@ public final class LoggerFrame {
                     System.exit(0);
                 }
             });
-            frame.setSize(new Dimension(900, 620));
+            frame.setSize(DEFAULT_SIZE);
+            frame.setMinimumSize(new Dimension(760, 520));
             frame.setLocationByPlatform(true);
             frame.setVisible(true);
             panel.set(p);
@@ -57,9 +61,9 @@ public final class LoggerFrame {
         SwingUtilities.invokeAndWait(() -> {
             FlatLightLaf.setup();
             LoggerPanel p = new LoggerPanel(config, file);
-            p.setSize(new Dimension(900, 620));
+            p.setSize(DEFAULT_SIZE);
             layout(p);
-            BufferedImage img = new BufferedImage(900, 620, BufferedImage.TYPE_INT_RGB);
+            BufferedImage img = new BufferedImage(DEFAULT_SIZE.width, DEFAULT_SIZE.height, BufferedImage.TYPE_INT_RGB);
             Graphics2D g = img.createGraphics();
             p.paint(g);
             g.dispose();

@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
+import javax.swing.JFileChooser;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
@@ -29,22 +30,26 @@ import org.slf4j.LoggerFactory;
  * writer, receiver (with its clients), sender (with its clients), memory and priority — plus the cache
  * browser ({@link CacheBrowser}); Start, Stop and <em>Retry database</em> (enabled once the writer reported
  * the database DOWN), and the live status: cache used/free, events per second in and out, database state and lag.
- * Start validates every field (the first bad one is shown with its precise message), saves the file the
- * panel was opened with, seals the configuration and starts the logger off the event thread.
+ * Each field is checked as it is typed ({@link SettingField}). Start validates every field (the first bad one is
+ * shown with its precise message), saves the panel's file, seals the configuration and starts the logger off the
+ * event thread; while it runs only the live settings stay editable, and a new valid value of one is applied to the
+ * running logger at Enter or when the field is left, and saved. Load… and Save… read and write a configuration file.
  *
- * <p>Component names (for tests): {@code start}, {@code stop}, {@code retry}, {@code status}, {@code message}, and each
- * field is named by its setting's key.
+ * <p>Component names (for tests): {@code start}, {@code stop}, {@code retry}, {@code load}, {@code save},
+ * {@code status}, {@code message}, and each field is named by its setting's key.
  */
 public final class LoggerPanel extends JPanel {
     private static final Logger LOG = LoggerFactory.getLogger(LoggerPanel.class);
 
-    private final Path file;
+    private Path file;
     private final List<SettingsTab> tabs = new ArrayList<>();
     private final ClientTableModel cores = new ClientTableModel();
     private final ClientTableModel viewers = new ClientTableModel();
     private final JButton start = new JButton("Start");
     private final JButton stop = new JButton("Stop");
     private final JButton retry = new JButton("Retry database");
+    private final JButton load = new JButton("Load…");
+    private final JButton save = new JButton("Save…");
     private final JLabel cacheLabel = new JLabel("cache: -");
     private final JLabel rateLabel = new JLabel("events/s: -");
     private final JLabel databaseLabel = new JLabel("database: -");
@@ -61,7 +66,7 @@ public final class LoggerPanel extends JPanel {
         JTabbedPane pane = new JTabbedPane();
         pane.setName("tabs");
         for (LoggerSetting.Panel p : LoggerSetting.Panel.values()) {
-            SettingsTab tab = new SettingsTab(p, config);
+            SettingsTab tab = new SettingsTab(p, config, this::applyLive);
             tabs.add(tab);
             if (p == LoggerSetting.Panel.RECEIVER || p == LoggerSetting.Panel.SENDER) {
                 JPanel withClients = new JPanel(new BorderLayout());
@@ -73,7 +78,9 @@ public final class LoggerPanel extends JPanel {
                 withClients.add(scroll, BorderLayout.CENTER);
                 pane.addTab(p.title(), withClients);
             } else {
-                pane.addTab(p.title(), tab);
+                JScrollPane scroll = new JScrollPane(tab);
+                scroll.setBorder(BorderFactory.createEmptyBorder());
+                pane.addTab(p.title(), scroll);
             }
         }
         CacheBrowser browser = new CacheBrowser(() -> logger);
@@ -91,6 +98,12 @@ public final class LoggerPanel extends JPanel {
         retry.setToolTipText("after the writer reported the database DOWN (its reconnection attempts used up): try again");
         retry.setEnabled(false);
         retry.addActionListener(e -> retryDatabase());
+        load.setName("load");
+        save.setName("save");
+        load.setToolTipText("read the settings from a configuration file");
+        save.setToolTipText("write the settings to a configuration file (Start also saves them)");
+        load.addActionListener(e -> chooseFile(true));
+        save.addActionListener(e -> chooseFile(false));
         status.setName("status");
         cacheLabel.setName("cache");
         rateLabel.setName("rates");
@@ -110,11 +123,18 @@ public final class LoggerPanel extends JPanel {
         statusPanel.add(cacheLabel);
         statusPanel.add(rateLabel);
         statusPanel.add(databaseLabel);
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.RIGHT));
-        buttons.add(message);
-        buttons.add(start);
-        buttons.add(stop);
-        buttons.add(retry);
+        JPanel buttons = new JPanel(new BorderLayout());
+        message.setBorder(BorderFactory.createEmptyBorder(0, 6, 0, 6));
+        buttons.add(message, BorderLayout.CENTER);
+        JPanel files = new JPanel(new FlowLayout(FlowLayout.LEFT));
+        files.add(load);
+        files.add(save);
+        buttons.add(files, BorderLayout.WEST);
+        JPanel actions = new JPanel(new FlowLayout(FlowLayout.RIGHT));
+        buttons.add(actions, BorderLayout.EAST);
+        actions.add(start);
+        actions.add(stop);
+        actions.add(retry);
         JPanel south = new JPanel(new BorderLayout());
         south.add(statusPanel, BorderLayout.CENTER);
         south.add(buttons, BorderLayout.SOUTH);
@@ -125,15 +145,85 @@ public final class LoggerPanel extends JPanel {
         return logger;
     }
 
-    private void startLogger() {
+    /** The fields as a config, or null when one is invalid (its message shown). */
+    private LoggerConfig fieldsConfig() {
         LoggerConfig next = new LoggerConfig();
         try {
             for (SettingsTab t : tabs) {
                 t.applyTo(next);
             }
             next.validate();
+            return next;
         } catch (IllegalArgumentException e) {
             message.setText(e.getMessage());
+            return null;
+        }
+    }
+
+    /** Writes the fields to {@code target}, which becomes the panel's file; false (and why, shown) when not. */
+    public boolean save(Path target) {
+        LoggerConfig next = fieldsConfig();
+        if (next == null) {
+            return false;
+        }
+        try {
+            LoggerConfigFile.save(next, target);
+        } catch (IOException e) {
+            message.setText("cannot save " + target + ": " + e.getMessage());
+            return false;
+        }
+        file = target;
+        message.setText("saved to " + target);
+        return true;
+    }
+
+    /** Reads {@code source} into the fields (nothing changes when it is refused: the reason is shown). */
+    public boolean load(Path source) {
+        try {
+            LoggerConfig read = LoggerConfigFile.load(source);
+            tabs.forEach(t -> t.show(read));
+            file = source;
+            message.setText("loaded " + source);
+            return true;
+        } catch (IOException | IllegalArgumentException e) {
+            message.setText("cannot load " + source + ": " + e.getMessage());
+            return false;
+        }
+    }
+
+    private void chooseFile(boolean open) {
+        JFileChooser chooser = new JFileChooser(file.toAbsolutePath().getParent() == null ? null
+                : file.toAbsolutePath().getParent().toFile());
+        chooser.setSelectedFile(file.toFile());
+        int answer = open ? chooser.showOpenDialog(this) : chooser.showSaveDialog(this);
+        if (answer == JFileChooser.APPROVE_OPTION) {
+            if (open) {
+                load(chooser.getSelectedFile().toPath());
+            } else {
+                save(chooser.getSelectedFile().toPath());
+            }
+        }
+    }
+
+    private void applyLive(LoggerSetting setting, String value) {
+        NetworkStateLogger running = logger;
+        if (running == null) {
+            return;
+        }
+        try {
+            running.applyLive(setting, value);
+            LoggerConfigFile.save(running.config(), file);
+            message.setText(setting.label() + " = " + value + " applied to the running logger");
+        } catch (IOException e) {
+            message.setText(setting.label() + " applied, but " + file + " could not be saved: " + e.getMessage());
+        } catch (IllegalArgumentException | IllegalStateException e) {
+            message.setText(e.getMessage());
+        }
+    }
+
+    private void startLogger() {
+        LoggerConfig next = fieldsConfig();
+        if (next == null) {
             return;
         }
         try {
@@ -144,7 +234,8 @@ public final class LoggerPanel extends JPanel {
         }
         config = next;
         start.setEnabled(false);
-        tabs.forEach(t -> t.setEditable(false));
+        load.setEnabled(false);
+        tabs.forEach(t -> t.setRunning(true));
         message.setText("starting…");
         NetworkStateLogger starting = new NetworkStateLogger(next);
         new SwingWorker<Void, Void>() {
@@ -166,7 +257,8 @@ public final class LoggerPanel extends JPanel {
                     LOG.error("logger did not start", cause);
                     message.setText("cannot start: " + cause.getMessage());
                     start.setEnabled(true);
-                    tabs.forEach(t -> t.setEditable(true));
+                    load.setEnabled(true);
+                    tabs.forEach(t -> t.setRunning(false));
                 }
             }
         }.execute();
@@ -190,7 +282,8 @@ public final class LoggerPanel extends JPanel {
             protected void done() {
                 logger = null;
                 start.setEnabled(true);
-                tabs.forEach(t -> t.setEditable(true));
+                load.setEnabled(true);
+                tabs.forEach(t -> t.setRunning(false));
                 message.setText("stopped");
             }
         }.execute();

@@ -1,80 +1,85 @@
 package org.fdnet.logger.ui;
 
+import java.awt.BorderLayout;
 import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
-import java.util.EnumMap;
-import java.util.Map;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.BiConsumer;
 import javax.swing.BorderFactory;
-import javax.swing.JComboBox;
-import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
-import javax.swing.JPasswordField;
-import javax.swing.JTextField;
 import org.fdnet.logger.config.LoggerConfig;
 import org.fdnet.logger.config.LoggerSetting;
 
 /**
- * One tab of the configuration panel: a labelled field for every setting of one of the thesis's panels.
- * Booleans are true/false choices, the password is masked; the description is the tooltip.
+ * One tab of the configuration panel: a row for every setting of one of the thesis's panels — its short
+ * label, its field ({@link SettingField}), its unit and a one-line help — under a line telling which settings
+ * a running logger takes at once.
  */
 final class SettingsTab extends JPanel {
-    private final Map<LoggerSetting, JComponent> fields = new EnumMap<>(LoggerSetting.class);
+    private final List<SettingField> fields = new ArrayList<>();
 
-    SettingsTab(LoggerSetting.Panel panel, LoggerConfig config) {
-        super(new GridBagLayout());
-        setBorder(BorderFactory.createTitledBorder(panel.title() + " properties"));
+    /** {@code onLiveChange} receives a live setting's new, valid value (applied to a running logger). */
+    SettingsTab(LoggerSetting.Panel panel, LoggerConfig config, BiConsumer<LoggerSetting, String> onLiveChange) {
+        super(new BorderLayout());
+        JPanel grid = new JPanel(new GridBagLayout());
+        add(grid, BorderLayout.NORTH);
+        setBorder(BorderFactory.createCompoundBorder(BorderFactory.createTitledBorder(panel.title() + " properties"),
+                BorderFactory.createEmptyBorder(2, 4, 2, 4)));
         GridBagConstraints c = new GridBagConstraints();
-        c.insets = new Insets(3, 6, 3, 6);
+        c.insets = new Insets(3, 4, 3, 4);
         c.anchor = GridBagConstraints.WEST;
         int row = 0;
         for (LoggerSetting s : LoggerSetting.values()) {
             if (s.panel() != panel) {
                 continue;
             }
+            SettingField field = new SettingField(s, config.get(s), onLiveChange);
+            fields.add(field);
+            c.gridy = row++;
             c.gridx = 0;
-            c.gridy = row;
             c.weightx = 0;
             c.fill = GridBagConstraints.NONE;
-            JLabel label = new JLabel(s.description() + ":");
-            label.setToolTipText(s.key());
-            add(label, c);
-            JComponent field = field(s, config.get(s));
-            field.setToolTipText(s.key() + " (default " + s.defaultValue() + ")");
-            field.setName(s.key());
+            grid.add(field.label(), c);
             c.gridx = 1;
+            c.fill = GridBagConstraints.HORIZONTAL;
+            grid.add(field.input(), c);
+            c.gridx = 2;
+            c.fill = GridBagConstraints.NONE;
+            grid.add(field.unit(), c);
+            c.gridx = 3;
             c.weightx = 1;
             c.fill = GridBagConstraints.HORIZONTAL;
-            add(field, c);
-            fields.put(s, field);
-            row++;
+            grid.add(field.help(), c);
         }
-        c.gridy = row;
-        c.weighty = 1;
-        add(new JLabel(), c);
+        if (fields.stream().anyMatch(f -> f.setting().live())) {
+            JLabel note = new JLabel(SettingField.LIVE_MARK + " applied at once while the logger runs;"
+                    + " the other settings take effect at the next Start");
+            note.setForeground(SettingField.QUIET);
+            note.setBorder(BorderFactory.createEmptyBorder(8, 4, 3, 4));
+            note.setVerticalAlignment(JLabel.TOP);
+            add(note, BorderLayout.CENTER);
+        }
     }
 
-    private static JComponent field(LoggerSetting s, String value) {
-        if ("true".equals(s.defaultValue()) || "false".equals(s.defaultValue())) {
-            JComboBox<String> box = new JComboBox<>(new String[] {"true", "false"});
-            box.setSelectedItem(value);
-            return box;
-        }
-        JTextField text = s == LoggerSetting.DATABASE_PASSWORD ? new JPasswordField(value, 24) : new JTextField(value, 24);
-        return text;
+    List<SettingField> fields() {
+        return fields;
     }
 
     /** Copies the fields into the config; the first invalid value throws with its precise message. */
     void applyTo(LoggerConfig config) {
-        for (Map.Entry<LoggerSetting, JComponent> e : fields.entrySet()) {
-            JComponent f = e.getValue();
-            String v = f instanceof JComboBox<?> box ? String.valueOf(box.getSelectedItem()) : ((JTextField) f).getText();
-            config.set(e.getKey(), v);
-        }
+        fields.forEach(f -> config.set(f.setting(), f.value()));
     }
 
-    void setEditable(boolean editable) {
-        fields.values().forEach(f -> f.setEnabled(editable));
+    /** Shows the config's values in the fields. */
+    void show(LoggerConfig config) {
+        fields.forEach(f -> f.setValue(config.get(f.setting())));
+    }
+
+    /** Running: only the live settings stay editable. */
+    void setRunning(boolean running) {
+        fields.forEach(f -> f.setRunning(running));
     }
 }

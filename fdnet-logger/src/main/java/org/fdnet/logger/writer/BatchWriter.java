@@ -53,7 +53,7 @@ public final class BatchWriter implements Runnable {
     /** How often a writer waiting to fill a free lane looks whether the batch in flight committed. */
     private static final long POLL_NANOS = TimeUnit.MILLISECONDS.toNanos(2);
 
-    private final WriterSettings settings;
+    private volatile WriterSettings settings;
     private final EventCache cache;
     private final EventStore store;
     private final SourceDirectory directory;
@@ -94,6 +94,19 @@ public final class BatchWriter implements Runnable {
                     bulkPriority(settings.priorityEnabled(), false));
         }
         this.sizer = new BatchSizer(settings.batchSize(), settings.maxBatchRows(), lanes.length);
+    }
+
+    /**
+     * Takes new values of the live settings (writing delay, batch timeout, reconnection attempts and delay) from
+     * the next wait on; the lanes, the batch sizer and the priority keep what they were started with.
+     */
+    public void retune(WriterSettings next) {
+        settings = next;
+    }
+
+    /** The settings the writer works with now. */
+    public WriterSettings settings() {
+        return settings;
     }
 
     /**

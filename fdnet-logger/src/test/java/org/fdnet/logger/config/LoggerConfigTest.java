@@ -26,6 +26,28 @@ class LoggerConfigTest {
     }
 
     @Test
+    void shouldGiveEverySettingAShortLabelAndAOneLineHelpForThePanel() {
+        for (LoggerSetting s : LoggerSetting.values()) {
+            assertThat(s.label()).as(s.key()).isNotBlank().hasSizeLessThanOrEqualTo(20);
+            assertThat(s.help()).as(s.key()).isNotBlank().hasSizeLessThanOrEqualTo(55);
+            assertThat(s.description()).as(s.key()).startsWith(s.help());
+        }
+    }
+
+    @Test
+    void shouldChangeOnlyLiveSettingsOnceSealed() {
+        LoggerConfig c = new LoggerConfig();
+        c.seal();
+        c.setLive(LoggerSetting.WRITER_BATCH_TIMEOUT, "300");
+        assertThat(c.batchTimeoutMillis()).isEqualTo(300);
+        assertThatThrownBy(() -> c.setLive(LoggerSetting.WRITER_BATCH_TIMEOUT, "0"))
+                .hasMessage("writer.batchTimeoutMillis must be at least 1, was 0");
+        assertThatThrownBy(() -> c.setLive(LoggerSetting.WRITER_BATCH_SIZE, "10")).isInstanceOf(IllegalStateException.class);
+        assertThatThrownBy(() -> LoggerConfig.check(LoggerSetting.RECEIVER_PORT, "port"))
+                .hasMessage("receiver.port must be a whole number, was 'port'");
+    }
+
+    @Test
     void shouldRejectBadValuesWithPreciseMessages() {
         LoggerConfig c = new LoggerConfig();
         assertThatThrownBy(() -> c.set(LoggerSetting.WRITER_BATCH_SIZE, "0"))

@@ -41,8 +41,8 @@ class ConfigPanelDisplayTest {
             BufferedImage shot = ImageIO.read(png.toFile());
             assertThat(shot.getWidth()).isGreaterThan(600);
             assertThat(folder.resolve("logger.properties")).content().contains("writer.batchSize=500");
-            // Kept for the documentation (docs/images/logger-config.png is copied from here).
-            java.nio.file.Files.copy(png, Path.of("target", "logger-config.png"),
+            // Kept to look at: the panel running with a core connected.
+            java.nio.file.Files.copy(png, Path.of("target", "logger-config-running.png"),
                     java.nio.file.StandardCopyOption.REPLACE_EXISTING);
         }
     }

@@ -8,7 +8,6 @@ import java.awt.Window;
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import java.util.concurrent.atomic.AtomicReference;
 import javax.imageio.ImageIO;
 import javax.swing.AbstractButton;
 import javax.swing.JLabel;
@@ -25,6 +24,7 @@ import org.fdnet.logger.config.LoggerConfig;
 import org.fdnet.logger.config.LoggerSetting;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.testing.OnEdt;
 
 /**
  * Drives the real configuration window on a real display (run in a child JVM by {@code ConfigPanelDisplayTest}):
@@ -127,19 +127,7 @@ public final class ConfigPanelScenario {
     }
 
     static <T> T onEdt(Callable<T> c) throws Exception {
-        AtomicReference<T> result = new AtomicReference<>();
-        AtomicReference<Exception> failure = new AtomicReference<>();
-        SwingUtilities.invokeAndWait(() -> {
-            try {
-                result.set(c.call());
-            } catch (Exception e) {
-                failure.set(e);
-            }
-        });
-        if (failure.get() != null) {
-            throw failure.get();
-        }
-        return result.get();
+        return OnEdt.call(c);
     }
 
     static <T extends Component> T find(Container root, String name, Class<T> type) {

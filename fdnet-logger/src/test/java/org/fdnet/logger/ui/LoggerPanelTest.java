@@ -28,7 +28,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The panel's cache browser and <em>Retry database</em> button against a real PostgreSQL, stopped and started
+ * A live setting changed in the running panel, the panel's cache browser and <em>Retry database</em> button against a real PostgreSQL, stopped and started
  * again (the panel itself, in this JVM: no window is needed to press its buttons and read its table).
  */
 @Timeout(value = 150, unit = TimeUnit.SECONDS)
@@ -39,7 +39,7 @@ class LoggerPanelTest {
     Path folder;
 
     @Test
-    void shouldBrowseCachedEventsOfADataAndRetryADatabaseReportedDownFromThePanel() throws Exception {
+    void shouldApplyALiveSettingBrowseCachedEventsAndRetryADatabaseReportedDownFromThePanel() throws Exception {
         LoggerConfig config = database.fixture().loggerConfig().set(LoggerSetting.WRITER_RECONNECT_ATTEMPTS, "2")
                 .set(LoggerSetting.WRITER_RECONNECT_DELAY, "100").set(LoggerSetting.WRITER_CONNECTIONS, "1");
         LoggerPanel panel = onEdt(() -> new LoggerPanel(config, folder.resolve("logger.properties")));
@@ -47,6 +47,17 @@ class LoggerPanelTest {
             click(panel, "start");
             waitFor(() -> panel.logger() != null && panel.logger().running(), "logger started");
             NetworkStateLogger logger = panel.logger();
+            onEdt(() -> {
+                javax.swing.JTextField timeout = find(panel, LoggerSetting.WRITER_BATCH_TIMEOUT.key(), javax.swing.JTextField.class);
+                timeout.setText("300");
+                timeout.postActionEvent(); // Enter
+                return null;
+            });
+            assertThat(logger.writer().settings().batchTimeoutMillis()).as("a live setting reaches the running writer")
+                    .isEqualTo(300);
+            assertThat(folder.resolve("logger.properties")).content().contains("writer.batchTimeoutMillis=300");
+            assertThat(onEdt(() -> find(panel, LoggerSetting.WRITER_BATCH_SIZE.key(), javax.swing.JTextField.class)
+                    .isEnabled())).as("a next-Start setting cannot be edited while running").isFalse();
             EventClock clock = new EventClock();
             try (LoggerClient core = new LoggerClient(LoggerClientSettings.defaults("127.0.0.1", logger.receiverPort(),
                     "panel-core"))) {

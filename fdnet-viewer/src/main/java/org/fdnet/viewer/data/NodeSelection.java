@@ -2,8 +2,9 @@ package org.fdnet.viewer.data;
 
 /**
  * A node the user asked to plot: {@code Module/Node} or {@code Node} (any module), optionally followed by
- * its unit in brackets: {@code Balance/stability margin[m]}. The logger knows no units, so the unit comes
- * from here.
+ * its unit in brackets: {@code Balance/stability margin[m]}. One component of a Data holding several numbers
+ * is named by its index: {@code Course/track[0]}, with a unit {@code Course/track[0][m]} (brackets holding only
+ * digits are an index, never a unit). The logger knows no units, so the unit comes from here.
  */
 public record NodeSelection(String name, String unit) {
 
@@ -14,9 +15,24 @@ public record NodeSelection(String name, String unit) {
         }
         int open = t.lastIndexOf('[');
         if (t.endsWith("]") && open > 0) {
-            return new NodeSelection(t.substring(0, open).trim(), t.substring(open + 1, t.length() - 1).trim());
+            String inside = t.substring(open + 1, t.length() - 1).trim();
+            if (!inside.chars().allMatch(Character::isDigit) || inside.isEmpty()) {
+                return new NodeSelection(t.substring(0, open).trim(), inside);
+            }
         }
         return new NodeSelection(t, "");
+    }
+
+    /** The node's name without a component index ({@code Course/track} for {@code Course/track[0]}). */
+    public String node() {
+        int open = name.lastIndexOf('[');
+        return open > 0 && name.endsWith("]") ? name.substring(0, open) : name;
+    }
+
+    /** True when the series belongs to this selection: the node's series, or the one component named. */
+    public boolean matches(Series series) {
+        String n = series.name();
+        return n.equals(name) || !name.endsWith("]") && n.startsWith(name + "[") && n.endsWith("]");
     }
 
     @Override

@@ -24,6 +24,12 @@ public final class PlotData {
     private final List<Series> all = new CopyOnWriteArrayList<>();
     private final AtomicLong ignored = new AtomicLong();
     private final AtomicLong accepted = new AtomicLong();
+    private volatile UnitBook units = new UnitBook();
+
+    /** Series created from now on take their unit from {@code book} when it knows one (see {@link UnitBook}). */
+    public void useUnits(UnitBook book) {
+        units = book;
+    }
 
     /** Plots the source's values under {@code name}; tracking a source twice keeps the first. */
     public void track(int sourceId, String name, String unit) {
@@ -83,8 +89,8 @@ public final class PlotData {
         if (parts.size() < count) {
             synchronized (s) {
                 while (parts.size() < count) {
-                    Series series = new Series(count == 1 && parts.isEmpty() ? s.name()
-                            : s.name() + "[" + parts.size() + "]", s.unit());
+                    String name = count == 1 && parts.isEmpty() ? s.name() : s.name() + "[" + parts.size() + "]";
+                    Series series = new Series(name, units.unitOf(name, s.unit()));
                     parts.add(series);
                     all.add(series);
                 }

@@ -105,6 +105,15 @@ public final class Series {
         return new Sample(times[i], values[i]);
     }
 
+    /**
+     * The value the Data held at {@code time}: its newest sample at or before it (a Data keeps its value until it is
+     * written again), or null when its first sample is later.
+     */
+    public synchronized Sample heldAt(long time) {
+        int i = lowerBound(time == Long.MAX_VALUE ? time : time + 1) - 1;
+        return i < start ? null : new Sample(times[i], values[i]);
+    }
+
     /** Visits the samples from one before {@code from} to one after {@code to} (so lines reach the edges). */
     public synchronized void visit(long from, long to, SampleVisitor visitor) {
         int a = Math.max(start, lowerBound(from) - 1);

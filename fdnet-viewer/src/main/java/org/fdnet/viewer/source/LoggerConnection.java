@@ -140,7 +140,7 @@ public final class LoggerConnection implements AutoCloseable {
             }
         }
         throw new IllegalArgumentException("node '" + selection.name() + "': the logger at " + address
-                + " knows no Data of that name (fdnet viewer lists them in its node picker)");
+                + " knows no Data of that name (fdnet viewer shows them in its tree of the run's Datas)");
     }
 
     /** Tracks the nodes in the live data and starts monitoring them; answers the resolved nodes. */
@@ -174,12 +174,33 @@ public final class LoggerConnection implements AutoCloseable {
         return events.size();
     }
 
+    /**
+     * The first and last time (µs, on the run's time axis) of the sources' recorded values, or null when they have
+     * none: how long a run lasted, measured on a few of its Datas.
+     */
+    public long[] span(int[] sourceIds) throws IOException {
+        HistoryColumns events = client.historyColumns(sourceIds, 0, Long.MAX_VALUE);
+        events.shiftTimes(source -> offsetOfSource.getOrDefault(source, 0L));
+        long first = Long.MAX_VALUE;
+        long last = Long.MIN_VALUE;
+        for (int i = 0; i < events.size(); i++) {
+            first = Math.min(first, events.time(i));
+            last = Math.max(last, events.time(i));
+        }
+        return events.size() == 0 ? null : new long[] {first, last};
+    }
+
     /** The raw history of the sources (time order), for replay. */
     public List<NetworkEvent> history(int[] sourceIds, long from, long to) throws IOException {
         List<NetworkEvent> events = new ArrayList<>(client.history(sourceIds, from, to));
         events.replaceAll(this::shift);
         events.sort(java.util.Comparator.comparingLong(NetworkEvent::time)); // hosts' offsets may reorder a little
         return events;
+    }
+
+    /** µs the clock of the host that recorded {@code sourceId} is ahead of its run's coordinator (0 when not known). */
+    public long clockOffsetOf(int sourceId) {
+        return offsetOfSource.getOrDefault(sourceId, 0L);
     }
 
     /** How a node is named in legends: {@code Module/Node}. */

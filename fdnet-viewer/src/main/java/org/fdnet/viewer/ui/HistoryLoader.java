@@ -32,10 +32,20 @@ final class HistoryLoader implements AutoCloseable {
      */
     void load(LoggerConnection connection, int[] sources, long from, long to, PlotData into, IntConsumer done,
               Consumer<IOException> failed) {
+        ask(() -> connection.loadHistory(sources, from, to, into), done::accept, failed);
+    }
+
+    /** A request to the logger that answers a value. */
+    interface Request<T> {
+        T ask() throws IOException;
+    }
+
+    /** Asks on the loader's thread; then, on the event thread, {@code done} with the answer, or {@code failed}. */
+    <T> void ask(Request<T> request, Consumer<T> done, Consumer<IOException> failed) {
         thread.execute(() -> {
             try {
-                int n = connection.loadHistory(sources, from, to, into);
-                SwingUtilities.invokeLater(() -> done.accept(n));
+                T answer = request.ask();
+                SwingUtilities.invokeLater(() -> done.accept(answer));
             } catch (IOException e) {
                 SwingUtilities.invokeLater(() -> failed.accept(e));
             }

@@ -22,18 +22,22 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Function;
 import javax.swing.JComponent;
 import javax.swing.Timer;
 import org.fdnet.viewer.data.PlotData;
 import org.fdnet.viewer.data.Series;
 
 /**
- * One canvas drawing every series of a {@link PlotData}: one lane per unit (each with its own value axis),
- * a shared time axis, a legend per lane, and a cursor read-out (the value of each series at the mouse's
- * time). Live, the time window ends at the newest sample; paused, it stays where it is. Mouse wheel zooms
- * the time window, dragging pans it (and pauses), space pauses and resumes, double click returns to live.
- * Each series is reduced to a min/max per pixel column, so a frame costs the visible samples once, not a
- * shape per sample. Repaints at {@link #FRAMES_PER_SECOND} while shown.
+ * One plot: a canvas drawing the series a {@link PlotData} holds that were chosen for it (all of them by
+ * default), one lane per unit (each with its own value axis — a plot of a {@link PlotGrid} holds one unit), the
+ * time axis, and a legend beside the lines ({@link #setLegendVisible hideable}) that reads every series' value
+ * at the time cursor. The time window, pause and cursor live in a {@link TimeAxis} that all the plots of a window
+ * share: live, the window ends at the newest sample; paused, it stays where it is. Mouse wheel zooms, dragging
+ * pans (and pauses), space pauses and resumes, double click returns to live, and the mouse places the cursor.
+ * Each series is reduced to a min/max per pixel column, so a frame costs the visible samples once, not a shape
+ * per sample. On a time axis of its own it repaints itself at {@link #FRAMES_PER_SECOND} while shown; on a shared
+ * one, its {@link PlotGrid} does, for all its plots at once.
  */
 public final class PlotPanel extends JComponent {
     public static final int FRAMES_PER_SECOND = 30;
@@ -46,26 +50,44 @@ public final class PlotPanel extends JComponent {
     private static final int TOP = 8;
     private static final int BOTTOM = 26;
     private static final int LANE_GAP = 10;
+    private static final int LEGEND_MAX = 210;
     private static final int SMOOTH_POINTS = 600;
     private static final Stroke SMOOTH = new BasicStroke(1.3f);
 
-    private final PlotData data;
+    private final TimeAxis axis;
+    private final boolean ownAxis;
+    private final Function<PlotData, List<Series>> choice;
     private final Timer repaint;
     private final AtomicLong frames = new AtomicLong();
+    private volatile PlotData data;
     private volatile long newestPainted = Long.MIN_VALUE;
-    private volatile boolean paused;
-    private volatile long windowMicros = 10_000_000;
-    private volatile long pausedEnd;
-    private int cursorX = -1;
+    private volatile boolean legendVisible = true;
     private int dragX;
     private long dragEnd;
     private final List<ColumnSummary> summaries = new ArrayList<>();
     private int[] xs = new int[0];
     private int[] ys = new int[0];
 
+    /** A plot of every series of {@code data}, on a time axis of its own, repainting itself at its frame rate. */
     public PlotPanel(PlotData data) {
+        this(data, new TimeAxis(data::lastTime), PlotData::series, true);
+    }
+
+    /**
+     * A plot of the series {@code choice} picks from the data, on a shared time axis whose owner ticks it and
+     * repaints the plots ({@link PlotGrid}).
+     */
+    public PlotPanel(PlotData data, TimeAxis axis, Function<PlotData, List<Series>> choice) {
+        this(data, axis, choice, false);
+    }
+
+    private PlotPanel(PlotData data, TimeAxis axis, Function<PlotData, List<Series>> choice, boolean ownAxis) {
         this.data = data;
+        this.axis = axis;
+        this.ownAxis = ownAxis;
+        this.choice = choice;
         setPreferredSize(new Dimension(900, 560));
+        setMinimumSize(new Dimension(200, 90));
         setFocusable(true);
         setOpaque(true);
         repaint = new Timer(1000 / FRAMES_PER_SECOND, e -> repaint());
@@ -73,40 +95,38 @@ public final class PlotPanel extends JComponent {
         MouseAdapter mouse = new MouseAdapter() {
             @Override
             public void mouseMoved(MouseEvent e) {
-                cursorX = e.getX();
+                setCursorX(e.getX());
             }
 
             @Override
             public void mouseExited(MouseEvent e) {
-                cursorX = -1;
+                axis.setCursor(TimeAxis.NO_CURSOR);
             }
 
             @Override
             public void mousePressed(MouseEvent e) {
                 requestFocusInWindow();
                 dragX = e.getX();
-                dragEnd = viewEnd();
+                dragEnd = axis.viewEnd();
             }
 
             @Override
             public void mouseDragged(MouseEvent e) {
-                int plotWidth = Math.max(1, getWidth() - LEFT - RIGHT);
-                long shift = (long) ((double) (e.getX() - dragX) / plotWidth * windowMicros);
-                pausedEnd = dragEnd - shift;
-                paused = true;
-                cursorX = e.getX();
+                long shift = (long) ((double) (e.getX() - dragX) / plotWidth(getWidth()) * axis.windowMicros());
+                axis.panTo(dragEnd - shift);
+                setCursorX(e.getX());
             }
 
             @Override
             public void mouseClicked(MouseEvent e) {
                 if (e.getClickCount() == 2) {
-                    setPaused(false);
+                    axis.setPaused(false);
                 }
             }
 
             @Override
             public void mouseWheelMoved(MouseWheelEvent e) {
-                zoom(Math.pow(1.25, e.getPreciseWheelRotation()));
+                axis.zoom(Math.pow(1.25, e.getPreciseWheelRotation()));
             }
         };
         addMouseListener(mouse);
@@ -116,7 +136,7 @@ public final class PlotPanel extends JComponent {
             @Override
             public void keyPressed(KeyEvent e) {
                 if (e.getKeyCode() == KeyEvent.VK_SPACE) {
-                    setPaused(!paused);
+                    axis.setPaused(!axis.paused());
                 }
             }
         });
@@ -125,7 +145,9 @@ public final class PlotPanel extends JComponent {
     @Override
     public void addNotify() {
         super.addNotify();
-        repaint.start();
+        if (ownAxis) {
+            repaint.start();
+        }
     }
 
     @Override
@@ -138,49 +160,54 @@ public final class PlotPanel extends JComponent {
         return data;
     }
 
+    /** Draws from other data from the next frame on (live, a replay, a history). */
+    public void setData(PlotData next) {
+        data = next;
+    }
+
+    /** The series this plot draws now. */
+    public List<Series> shownSeries() {
+        return choice.apply(data);
+    }
+
+    public TimeAxis axis() {
+        return axis;
+    }
+
     /** Paused, the view keeps its place while values keep arriving; resumed, it follows the newest again. */
     public void setPaused(boolean pause) {
-        if (pause && !paused) {
-            pausedEnd = viewEnd();
-        }
-        paused = pause;
+        axis.setPaused(pause);
     }
 
     public boolean paused() {
-        return paused;
+        return axis.paused();
     }
 
     /** Multiplies the width of the time window ({@code < 1} zooms in). */
     public void zoom(double factor) {
-        windowMicros = Math.max(1_000, Math.min(7L * 24 * 3600 * 1_000_000, (long) (windowMicros * factor)));
+        axis.zoom(factor);
     }
 
     public long windowMicros() {
-        return windowMicros;
+        return axis.windowMicros();
     }
 
     public void setWindowMicros(long micros) {
-        windowMicros = Math.max(1_000, micros);
+        axis.setWindowMicros(micros);
     }
 
     /** Shows {@code from .. to} (µs) and pauses there (history). */
     public void showRange(long from, long to) {
-        windowMicros = Math.max(1_000, to - from);
-        pausedEnd = to;
-        paused = true;
+        axis.showRange(from, to);
     }
 
     /** The time (µs) at the right edge of the plot. */
     public long viewEnd() {
-        if (paused) {
-            return pausedEnd;
-        }
-        long last = data.lastTime();
-        return last == Long.MIN_VALUE ? System.currentTimeMillis() * 1000 : last;
+        return axis.viewEnd();
     }
 
     public long viewStart() {
-        return viewEnd() - windowMicros;
+        return axis.viewStart();
     }
 
     /** Frames painted so far. */
@@ -193,9 +220,29 @@ public final class PlotPanel extends JComponent {
         return newestPainted;
     }
 
-    /** Places the cursor read-out at x (pixels), -1 hides it. */
+    /** Places the time cursor at x (pixels) of this plot; outside the lines, -1 for instance, hides it. */
     public void setCursorX(int x) {
-        cursorX = x;
+        int w = plotWidth(getWidth());
+        axis.setCursor(x >= LEFT && x < LEFT + w
+                ? axis.viewStart() + (long) ((double) (x - LEFT) / w * axis.windowMicros()) : TimeAxis.NO_CURSOR);
+    }
+
+    /** The legend beside the lines (with the values at the cursor), or none: the lines take the whole width. */
+    public void setLegendVisible(boolean visible) {
+        legendVisible = visible;
+        repaint();
+    }
+
+    public boolean legendVisible() {
+        return legendVisible;
+    }
+
+    private int legendWidth(int width) {
+        return legendVisible ? Math.min(LEGEND_MAX, width / 4) : 0;
+    }
+
+    private int plotWidth(int width) {
+        return Math.max(10, width - LEFT - RIGHT - legendWidth(width));
     }
 
     @Override
@@ -209,28 +256,34 @@ public final class PlotPanel extends JComponent {
         g.setColor(Color.WHITE);
         g.fillRect(0, 0, width, height);
         g.setFont(getFont() != null ? getFont().deriveFont(11f) : new Font(Font.SANS_SERIF, Font.PLAIN, 11));
-        long end = viewEnd();
-        long start = end - windowMicros;
+        if (ownAxis) {
+            axis.tick();
+        }
+        long end = axis.viewEnd();
+        long window = axis.windowMicros();
+        long start = end - window;
+        List<Series> shown = shownSeries();
         Map<String, List<Series>> lanes = new LinkedHashMap<>();
-        for (Series s : data.series()) {
+        for (Series s : shown) {
             lanes.computeIfAbsent(s.unit(), u -> new ArrayList<>()).add(s);
         }
-        int plotWidth = Math.max(10, width - LEFT - RIGHT);
+        int plotWidth = plotWidth(width);
         int bottom = height - BOTTOM;
         if (lanes.isEmpty()) {
             g.setColor(Color.GRAY);
-            g.drawString("no values yet: pick nodes to plot (values arrive as the network writes them)", LEFT, height / 2);
+            g.drawString("no values yet: drag Datas here from the tree (values arrive as the network writes them)",
+                    LEFT, height / 2);
             frames.incrementAndGet();
             return;
         }
         int laneHeight = Math.max(20, (bottom - TOP - LANE_GAP * (lanes.size() - 1)) / lanes.size());
-        ensureColumns(plotWidth, data.series().size() + 8);
+        ensureColumns(plotWidth, shown.size() + 8);
         long newest = Long.MIN_VALUE;
         int lane = 0;
         int colour = 0;
-        List<String> readout = new ArrayList<>();
-        long cursorTime = cursorX >= LEFT && cursorX < LEFT + plotWidth
-                ? start + (long) ((double) (cursorX - LEFT) / plotWidth * windowMicros) : Long.MIN_VALUE;
+        long cursor = axis.cursor();
+        boolean cursorShown = cursor != TimeAxis.NO_CURSOR && cursor >= start && cursor <= end;
+        List<LegendRow> legend = new ArrayList<>();
         for (Map.Entry<String, List<Series>> e : lanes.entrySet()) {
             int top = TOP + lane * (laneHeight + LANE_GAP);
             List<Series> laneSeries = e.getValue();
@@ -241,14 +294,7 @@ public final class PlotPanel extends JComponent {
                 summary.widen(raw);
             }
             double[] range = padded(raw);
-            // keep the legend's rows above the lines: widen the range upwards by their height
-            int legendHeight = legendRows(g, laneSeries, plotWidth) * g.getFontMetrics().getHeight() + 8;
-            if (legendHeight < laneHeight / 2) {
-                range[1] += (range[1] - range[0]) * legendHeight / (double) (laneHeight - legendHeight);
-            }
             paintLaneFrame(g, e.getKey(), top, laneHeight, plotWidth, range);
-            int legendX = LEFT + 6;
-            int legendY = top + 14;
             for (Series s : laneSeries) {
                 if (colour >= summaries.size()) {
                     break; // a series appeared during this frame: drawn from the next one
@@ -257,37 +303,76 @@ public final class PlotPanel extends JComponent {
                 Color c = PALETTE[colour++ % PALETTE.length];
                 paintSeries(g, summary, c, top, laneHeight, plotWidth, range);
                 newest = Math.max(newest, summary.newest());
-                String label = s.name();
-                FontMetrics fm = g.getFontMetrics();
-                if (legendX + fm.stringWidth(label) + 16 > LEFT + plotWidth - 130) {
-                    legendX = LEFT + 6;
-                    legendY += fm.getHeight();
-                }
-                if (legendY < top + laneHeight - 4) {
-                    g.setColor(new Color(255, 255, 255, 200));
-                    g.fillRect(legendX - 2, legendY - fm.getAscent(), fm.stringWidth(label) + 16, fm.getHeight());
-                    g.setColor(c);
-                    g.fillRect(legendX, legendY - 8, 8, 8);
-                    g.setColor(Color.DARK_GRAY);
-                    g.drawString(label, legendX + 11, legendY);
-                }
-                legendX += fm.stringWidth(label) + 22;
-                if (cursorTime != Long.MIN_VALUE) {
-                    Series.Sample near = s.nearest(cursorTime);
-                    if (near != null) {
-                        readout.add(String.format("%s = %.6g%s", s.name(), near.value(),
-                                s.unit().isEmpty() ? "" : " " + s.unit()));
-                    }
-                }
+                Series.Sample near = cursorShown ? s.heldAt(cursor) : null;
+                legend.add(new LegendRow(s, c, near == null ? "" : String.format("%.4g%s", near.value(),
+                        s.unit().isEmpty() ? "" : " " + s.unit())));
             }
             lane++;
         }
         paintTimeAxis(g, start, end, plotWidth, bottom);
-        if (cursorTime != Long.MIN_VALUE) {
-            paintReadout(g, cursorTime, readout, plotWidth, bottom);
+        if (cursorShown) {
+            int x = LEFT + (int) ((double) (cursor - start) / window * plotWidth);
+            g.setColor(new Color(0x55, 0x55, 0x55));
+            g.drawLine(x, TOP, x, bottom);
+        }
+        if (legendVisible) {
+            paintLegend(g, legend, cursorShown ? cursor : TimeAxis.NO_CURSOR, LEFT + plotWidth + RIGHT, legendWidth(width),
+                    bottom);
+        } else if (cursorShown) {
+            List<String> lines = new ArrayList<>();
+            legend.forEach(r -> lines.add(r.series().name() + " = " + (r.value().isEmpty() ? "—" : r.value())));
+            paintReadout(g, LEFT + (int) ((double) (cursor - start) / window * plotWidth), cursor, lines, plotWidth, bottom);
         }
         newestPainted = newest;
         frames.incrementAndGet();
+    }
+
+    private record LegendRow(Series series, Color colour, String value) {
+    }
+
+    /** The legend beside the lines: a row per series, with its value at the cursor at the row's right end. */
+    private void paintLegend(Graphics2D g, List<LegendRow> rows, long cursor, int x, int w, int bottom) {
+        FontMetrics fm = g.getFontMetrics();
+        int y = TOP + fm.getAscent();
+        boolean values = cursor != TimeAxis.NO_CURSOR;
+        if (values) {
+            g.setColor(Color.DARK_GRAY);
+            g.drawString("at " + CLOCK.format(Instant.ofEpochSecond(cursor / 1_000_000, (cursor % 1_000_000) * 1000)), x, y);
+            y += fm.getHeight() + 2;
+        }
+        for (int i = 0; i < rows.size(); i++) {
+            if (y + fm.getHeight() > bottom && i < rows.size() - 1) {
+                g.setColor(Color.GRAY);
+                g.drawString("… " + (rows.size() - i) + " more", x, y);
+                return;
+            }
+            LegendRow r = rows.get(i);
+            String value = values ? (r.value().isEmpty() ? "—" : r.value()) : "";
+            int valueWidth = value.isEmpty() ? 0 : fm.stringWidth(value) + 8;
+            g.setColor(r.colour());
+            g.fillRect(x, y - 8, 8, 8);
+            g.setColor(Color.DARK_GRAY);
+            g.drawString(fit(fm, r.series().name(), w - 14 - valueWidth), x + 12, y);
+            if (!value.isEmpty()) {
+                g.setColor(Color.BLACK);
+                g.drawString(value, x + w - fm.stringWidth(value) - 4, y);
+            }
+            y += fm.getHeight() + 1;
+        }
+    }
+
+    /** The text, shortened from the front ("…" + its end) when wider than {@code w}: a node's name ends in what tells it apart. */
+    private static String fit(FontMetrics fm, String text, int w) {
+        if (fm.stringWidth(text) <= w) {
+            return text;
+        }
+        for (int cut = 1; cut < text.length(); cut++) {
+            String shorter = "…" + text.substring(cut);
+            if (fm.stringWidth(shorter) <= w) {
+                return shorter;
+            }
+        }
+        return "…";
     }
 
     private void ensureColumns(int w, int seriesCount) {
@@ -298,21 +383,6 @@ public final class PlotPanel extends JComponent {
         while (summaries.size() < seriesCount) {
             summaries.add(new ColumnSummary());
         }
-    }
-
-    private static int legendRows(Graphics2D g, List<Series> series, int plotWidth) {
-        FontMetrics fm = g.getFontMetrics();
-        int rows = 1;
-        int x = LEFT + 6;
-        for (Series s : series) {
-            int w = fm.stringWidth(s.name());
-            if (x + w + 16 > LEFT + plotWidth - 130) {
-                x = LEFT + 6;
-                rows++;
-            }
-            x += w + 22;
-        }
-        return rows;
     }
 
     private static double[] padded(double[] r) {
@@ -333,7 +403,7 @@ public final class PlotPanel extends JComponent {
         g.setColor(new Color(0xc8, 0xcc, 0xd2));
         g.drawRect(LEFT, top, w, h);
         FontMetrics fm = g.getFontMetrics();
-        int ticks = Math.max(2, Math.min(6, h / 40));
+        int ticks = Math.max(3, Math.min(6, h / 30));
         double step = niceStep((range[1] - range[0]) / ticks);
         for (double v = Math.ceil(range[0] / step) * step; v <= range[1]; v += step) {
             int y = top + h - (int) ((v - range[0]) / (range[1] - range[0]) * h);
@@ -376,6 +446,7 @@ public final class PlotPanel extends JComponent {
             String label = CLOCK.format(Instant.ofEpochSecond(t / 1_000_000, (t % 1_000_000) * 1000));
             g.drawString(label, x - fm.stringWidth(label) / 2, bottom + 5 + fm.getAscent());
         }
+        boolean paused = axis.paused();
         String width = String.format("window %.3g s", (end - start) / 1e6) + (paused ? " · PAUSED" : "");
         int wx = LEFT + w - 6 - fm.stringWidth(width);
         g.setColor(new Color(255, 255, 255, 210));
@@ -384,10 +455,7 @@ public final class PlotPanel extends JComponent {
         g.drawString(width, wx, TOP + 3 + fm.getAscent());
     }
 
-    private void paintReadout(Graphics2D g, long time, List<String> lines, int w, int bottom) {
-        int x = cursorX;
-        g.setColor(new Color(0x55, 0x55, 0x55));
-        g.drawLine(x, TOP, x, bottom);
+    private void paintReadout(Graphics2D g, int x, long time, List<String> lines, int w, int bottom) {
         FontMetrics fm = g.getFontMetrics();
         List<String> shown = new ArrayList<>();
         shown.add(CLOCK.format(Instant.ofEpochSecond(time / 1_000_000, (time % 1_000_000) * 1000)));

@@ -2,33 +2,41 @@ package org.fdnet.viewer.ui;
 
 import com.formdev.flatlaf.FlatLightLaf;
 import java.awt.BorderLayout;
+import java.awt.Dimension;
 import java.awt.FlowLayout;
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.imageio.ImageIO;
 import javax.swing.BorderFactory;
-import javax.swing.DefaultListModel;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
 import javax.swing.JFileChooser;
 import javax.swing.JFrame;
 import javax.swing.JLabel;
-import javax.swing.JList;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JSplitPane;
+import javax.swing.JTable;
 import javax.swing.JTextField;
 import javax.swing.JToggleButton;
+import javax.swing.ListSelectionModel;
 import javax.swing.SwingUtilities;
 import javax.swing.WindowConstants;
 import org.fdnet.event.wire.LoggedNode;
 import org.fdnet.viewer.data.NodeSelection;
 import org.fdnet.viewer.data.PlotData;
+import org.fdnet.viewer.data.UnitBook;
+import org.fdnet.viewer.layout.LayoutFile;
+import org.fdnet.viewer.layout.ReadyLayouts;
+import org.fdnet.viewer.layout.ViewerLayout;
 import org.fdnet.viewer.legible.LegibleFont;
 import org.fdnet.viewer.source.LoggerConnection;
 import org.fdnet.viewer.source.Replay;
@@ -38,63 +46,83 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The Network State Viewer's window: a node picker (the logger's Data nodes of its newest run) on the
- * left, the {@link PlotPanel} in the middle, a tool bar (pause, window width, history of the last N
- * seconds, CSV export) on top and the replay bar (run, range, speed, play/pause) at the bottom.
+ * The Network State Viewer's window: on the left the logger's runs (network, hosts, start, length) and the chosen
+ * run's Datas as a tree ({@link NodeTree}); in the middle the plots on one time axis ({@link PlotGrid}); the tool
+ * bar on top ({@link ViewerActions}: pause, live, zoom, history, plots, legend, layouts, CSV export) and the replay
+ * bar at the bottom. The plots show the live values, a replayed run or a history, one at a time. A replayed run
+ * whose Datas a shipped layout names ({@link ReadyLayouts}: RoQ's) opens with that layout unless one was chosen.
  *
  * <p>The editor opens a plot for its selected nodes with {@link #open(String, List)}.
  */
 public final class ViewerWindow extends JFrame {
+    /** The window's size when it opens: every control is on screen at this size. */
+    public static final Dimension DEFAULT_SIZE = new Dimension(1200, 820);
     private static final Logger LOG = LoggerFactory.getLogger(ViewerWindow.class);
     private static final String[] SPEEDS = {"1×", "2×", "10×"};
+    private static final int MEASURED_SOURCES = 3;
 
     private final LoggerConnection connection;
     private final PlotData live;
     private final PlotData replayed = new PlotData();
-    private final PlotPanel livePlot;
-    private final PlotPanel replayPlot;
-    private final JPanel centre = new JPanel(new BorderLayout());
-    private final DefaultListModel<LoggedNode> nodeModel = new DefaultListModel<>();
-    private final JList<LoggedNode> nodeList = new JList<>(nodeModel);
+    private final UnitBook units = new UnitBook();
+    private final PlotGrid grid;
+    private final NodeTree tree = new NodeTree(units);
+    private final RunTableModel runModel = new RunTableModel();
+    private final JTable runTable = new JTable(runModel) {
+        @Override
+        public String getToolTipText(java.awt.event.MouseEvent e) {
+            int row = rowAtPoint(e.getPoint());
+            return row < 0 ? super.getToolTipText(e) : runModel.run(row).toString(); // network, hosts, start, id in full
+        }
+    };
     private final JLabel status = new JLabel(" ");
-    private final JComboBox<RunInfo> runs = new JComboBox<>();
-    private final java.util.Map<Integer, String> hostOfSource = new java.util.HashMap<>();
     private final JComboBox<String> speed = new JComboBox<>(SPEEDS);
     private final JTextField replayFrom = new JTextField("0", 5);
     private final JTextField replayTo = new JTextField("60", 5);
+    private final JTextField lastSeconds = new JTextField("60", 6);
     private final JToggleButton pause = new JToggleButton("Pause");
+    private final JToggleButton legend = new JToggleButton("Legend", true);
     private final AtomicReference<Replay> replay = new AtomicReference<>();
     private final HistoryLoader historyLoader = new HistoryLoader();
+    private final ViewerActions actions = new ViewerActions();
+    private boolean layoutChosen;
 
     private ViewerWindow(LoggerConnection connection, PlotData live) {
         super("FDNet Network State Viewer — logger " + connection.address());
         this.connection = connection;
         this.live = live;
-        livePlot = new PlotPanel(live);
-        replayPlot = new PlotPanel(replayed);
+        live.useUnits(units);
+        replayed.useUnits(units);
+        grid = new PlotGrid(live, units, this::say, this::watchLive);
         setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
-        add(toolBar(), BorderLayout.NORTH);
-        centre.add(livePlot, BorderLayout.CENTER);
-        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, picker(), centre);
-        split.setDividerLocation(250);
+        registerActions();
+        add(actions.toolBar(), BorderLayout.NORTH);
+        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, picker(), grid);
+        split.setDividerLocation(370);
         add(split, BorderLayout.CENTER);
         JPanel south = new JPanel(new BorderLayout());
         south.add(replayBar(), BorderLayout.NORTH);
+        status.setName("status");
         status.setBorder(BorderFactory.createEmptyBorder(2, 6, 2, 6));
         south.add(status, BorderLayout.SOUTH);
         add(south, BorderLayout.SOUTH);
-        setSize(1200, 720);
+        setSize(DEFAULT_SIZE);
     }
 
     /**
      * Opens a viewer on the logger's viewer service at {@code loggerAddress} ({@code HOST:PORT}) plotting
-     * {@code nodeNames} live ({@code Module/Node}, optionally with a unit: {@code Module/Node[m]}). Call from
-     * any thread; answers the window once shown.
+     * {@code nodeNames} live ({@code Module/Node}, optionally with a unit: {@code Module/Node[m]}), one plot per
+     * unit. Call from any thread; answers the window once shown.
      *
      * @throws IOException when the logger cannot be reached
      * @throws IllegalArgumentException naming a node the logger does not know
      */
     public static ViewerWindow open(String loggerAddress, List<String> nodeNames) throws IOException {
+        return open(loggerAddress, nodeNames, null);
+    }
+
+    /** As {@link #open(String, List)}, with the plots of {@code layout} (null: one plot per unit of the nodes). */
+    public static ViewerWindow open(String loggerAddress, List<String> nodeNames, ViewerLayout layout) throws IOException {
         PlotData live = new PlotData();
         LoggerConnection connection = new LoggerConnection(loggerAddress, live);
         try {
@@ -108,6 +136,11 @@ public final class ViewerWindow extends JFrame {
                 FlatLightLaf.setup();
                 ViewerWindow w = new ViewerWindow(connection, live);
                 w.fill(nodes, runList);
+                if (layout != null) {
+                    w.applyLayout(layout);
+                } else {
+                    w.plotPerUnit(selections);
+                }
                 w.setLocationByPlatform(true);
                 w.setVisible(true);
                 window.set(w);
@@ -126,12 +159,50 @@ public final class ViewerWindow extends JFrame {
         }
     }
 
-    public PlotPanel livePlot() {
-        return livePlot;
+    /** The plots. */
+    public PlotGrid plots() {
+        return grid;
     }
 
-    public PlotPanel replayPlot() {
-        return replayPlot;
+    /** The values streamed live from the logger. */
+    public PlotData liveData() {
+        return live;
+    }
+
+    /** The values of the run being replayed. */
+    public PlotData replayData() {
+        return replayed;
+    }
+
+    /**
+     * The Datas Export… writes, of the run chosen on the left: those chosen in the tree (a component stands for its
+     * Data), else those plotted.
+     */
+    List<LoggedNode> exportableNodes() {
+        RunInfo run = selectedRun();
+        if (run == null) {
+            return List.of();
+        }
+        java.util.Set<String> names = new java.util.LinkedHashSet<>();
+        tree.chosen().forEach(s -> names.add(dataName(s.name())));
+        if (names.isEmpty()) {
+            grid.shownSeries().forEach(s -> names.add(dataName(s.name())));
+        }
+        return run.nodes().stream().filter(n -> names.contains(LoggerConnection.label(n))).toList();
+    }
+
+    private static String dataName(String series) {
+        int component = series.indexOf('[');
+        return component < 0 ? series : series.substring(0, component);
+    }
+
+    /** The run chosen on the left, or null. */
+    RunInfo exportRun() {
+        return selectedRun();
+    }
+
+    void showStatus(String text) {
+        status.setText(text);
     }
 
     public LoggerConnection connection() {
@@ -147,102 +218,86 @@ public final class ViewerWindow extends JFrame {
         return status.getText();
     }
 
-    private void fill(List<LoggedNode> nodes, List<RunInfo> runList) {
-        if (!runList.isEmpty()) {
-            RunInfo newest = runList.get(0);
-            newest.nodesByHost().forEach(n -> {
-                nodeModel.addElement(n);
-                hostOfSource.put(n.sourceId(), newest.hostOf(n));
-            });
-        }
-        runList.forEach(runs::addItem);
-        status.setText(String.format("%d Datas in the newest run%s, %d runs recorded; plotting %d node(s)",
-                nodeModel.size(), runList.isEmpty() ? "" : " (" + runList.get(0) + ")", runList.size(),
-                live.trackedSources().length));
-        legibleNames(nodes);
+    private void say(String text) {
+        status.setText(text);
     }
 
     /**
-     * The list and the plots draw the nodes' names in a font that has their characters (Japanese names too);
-     * when no installed font has them, the status bar says so, naming the package to install.
+     * The one place the tool bar's actions are registered, in their order; another action (an exporter) is one more
+     * {@link ViewerActions#add} here.
      */
-    private void legibleNames(List<LoggedNode> nodes) {
-        List<String> names = new ArrayList<>();
-        nodes.forEach(n -> names.add(LoggerConnection.label(n)));
-        LegibleFont.Choice c = LegibleFont.forNames(nodeList.getFont(), names);
-        nodeList.setFont(c.font());
-        livePlot.setFont(c.font());
-        replayPlot.setFont(c.font());
-        if (!c.legible()) {
-            status.setText(c.warning());
-        }
-    }
-
-    /** The font the node list shows names in (tests: every name displayable). */
-    public java.awt.Font namesFont() {
-        return nodeList.getFont();
-    }
-
-    private JPanel toolBar() {
-        JPanel bar = new JPanel(new FlowLayout(FlowLayout.LEFT, 6, 4));
-        pause.addActionListener(e -> livePlot.setPaused(pause.isSelected()));
-        JButton zoomIn = new JButton("Zoom in");
-        zoomIn.addActionListener(e -> livePlot.zoom(0.5));
-        JButton zoomOut = new JButton("Zoom out");
-        zoomOut.addActionListener(e -> livePlot.zoom(2));
-        JButton follow = new JButton("Live");
-        follow.addActionListener(e -> {
-            pause.setSelected(false);
-            livePlot.setPaused(false);
-            showPlot(livePlot);
-        });
-        JTextField lastSeconds = new JTextField("60", 12);
-        lastSeconds.setToolTipText("seconds (60 = the last minute) or clock times 08:09:30-08:10:15");
-        JButton history = new JButton("History");
-        history.addActionListener(e -> loadHistory(lastSeconds.getText()));
-        JButton export = new JButton("Export CSV…");
-        export.addActionListener(e -> exportCsv());
-        bar.add(pause);
-        bar.add(follow);
-        bar.add(zoomIn);
-        bar.add(zoomOut);
-        bar.add(new JLabel("  "));
-        bar.add(history);
-        bar.add(lastSeconds);
-        bar.add(new JLabel("  "));
-        bar.add(export);
-        bar.add(new JLabel("   wheel: zoom · drag: pan · space: pause · double click: live"));
-        return bar;
+    private void registerActions() {
+        pause.setName("pause");
+        pause.addActionListener(e -> grid.axis().setPaused(pause.isSelected()));
+        actions.add(pause, "keep the plots where they are while values keep arriving (space)");
+        actions.add("live", "Live", "back to the live values, following the newest (double click a plot)", this::showLive);
+        actions.add("zoomIn", "Zoom in", "half the time window (mouse wheel)", () -> grid.axis().zoom(0.5));
+        actions.add("zoomOut", "Zoom out", "double the time window (mouse wheel)", () -> grid.axis().zoom(2));
+        actions.gap();
+        actions.add("history", "History", "load the live Datas' values of the range beside from the logger",
+                () -> loadHistory(lastSeconds.getText()));
+        lastSeconds.setName("historyRange");
+        actions.add(lastSeconds, "seconds (60 = the last minute) or clock times 08:09:30-08:10:15");
+        actions.gap();
+        actions.add("newPlot", "New plot", "a new plot at the bottom with the Datas chosen in the tree",
+                () -> addChosen(grid.addPlot("plot " + (grid.plots().size() + 1))));
+        legend.setName("legend");
+        legend.addActionListener(e -> grid.setLegendVisible(legend.isSelected()));
+        actions.add(legend, "the legend beside each plot, with the values at the time cursor; off: the lines take the width");
+        actions.add("openLayout", "Open layout…", "plots and their series from a layout file", this::openLayout);
+        actions.add("saveLayout", "Save layout…", "the plots and their series to a file (fdnet viewer --layout FILE)",
+                this::saveLayout);
+        actions.gap();
+        actions.add("exportCsv", "CSV…", "the plotted values of the visible time window as CSV, as drawn", this::exportCsv);
+        actions.add("export", ExportAction.NAME, ExportAction.TOOLTIP, new ExportAction(this));
     }
 
     private JPanel picker() {
         JPanel p = new JPanel(new BorderLayout(0, 4));
         p.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
-        p.add(new JLabel("Logger's Data nodes (newest run, by host)"), BorderLayout.NORTH);
-        nodeList.setCellRenderer((list, value, index, selected, focus) -> {
-            String host = hostOfSource.getOrDefault(value.sourceId(), "");
-            JLabel l = new JLabel((host.isEmpty() ? "" : host + ":  ") + LoggerConnection.label(value)
-                    + (live.tracks(value.sourceId()) ? "  ●" : ""));
-            l.setFont(list.getFont());
-            l.setOpaque(true);
-            l.setBorder(BorderFactory.createEmptyBorder(1, 4, 1, 4));
-            l.setBackground(selected ? list.getSelectionBackground() : list.getBackground());
-            l.setForeground(selected ? list.getSelectionForeground() : list.getForeground());
-            return l;
+        runTable.setName("runs");
+        runTable.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
+        runTable.getColumnModel().getColumn(0).setPreferredWidth(160);
+        runTable.getColumnModel().getColumn(1).setPreferredWidth(44);
+        runTable.getColumnModel().getColumn(2).setPreferredWidth(72);
+        runTable.getColumnModel().getColumn(3).setPreferredWidth(68);
+        runTable.setToolTipText("choose a run: its Datas show in the tree below, and Play replays it");
+        runTable.getSelectionModel().addListSelectionListener(e -> {
+            if (!e.getValueIsAdjusting() && runTable.getSelectedRow() >= 0) {
+                tree.show(runModel.run(runTable.getSelectedRow()), live);
+            }
         });
-        p.add(new JScrollPane(nodeList), BorderLayout.CENTER);
-        JButton plot = new JButton("Plot selected");
-        plot.addActionListener(e -> plotSelected());
-        p.add(plot, BorderLayout.SOUTH);
+        JScrollPane runs = new JScrollPane(runTable);
+        runs.setBorder(BorderFactory.createTitledBorder("Recorded runs"));
+        runs.setPreferredSize(new Dimension(360, 150));
+        p.add(runs, BorderLayout.NORTH);
+        JScrollPane nodes = new JScrollPane(tree);
+        nodes.setBorder(BorderFactory.createTitledBorder("Datas of the run (drag into a plot)"));
+        p.add(nodes, BorderLayout.CENTER);
+        JButton add = new JButton("Add to plot");
+        add.setName("addToPlot");
+        add.setToolTipText("add the chosen Datas to the last plot");
+        add.addActionListener(e -> addChosen(grid.plots().isEmpty() ? grid.addPlot("plot 1")
+                : grid.plots().get(grid.plots().size() - 1)));
+        JButton fresh = new JButton("New plot");
+        fresh.setName("addToNewPlot");
+        fresh.setToolTipText("a new plot with the chosen Datas");
+        fresh.addActionListener(e -> addChosen(grid.addPlot("plot " + (grid.plots().size() + 1))));
+        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
+        buttons.add(add);
+        buttons.add(fresh);
+        p.add(buttons, BorderLayout.SOUTH);
         return p;
     }
 
     private JPanel replayBar() {
         JPanel bar = new JPanel(new FlowLayout(FlowLayout.LEFT, 6, 4));
-        bar.setBorder(BorderFactory.createTitledBorder("Replay a recorded run"));
+        bar.setBorder(BorderFactory.createTitledBorder("Replay the run chosen on the left"));
         JButton play = new JButton("Play");
+        play.setName("play");
         play.addActionListener(e -> startReplay());
         JToggleButton hold = new JToggleButton("Pause replay");
+        hold.setName("pauseReplay");
         hold.addActionListener(e -> {
             Replay r = replay.get();
             if (r != null) {
@@ -253,49 +308,146 @@ public final class ViewerWindow extends JFrame {
                 }
             }
         });
+        speed.setName("speed");
         speed.addActionListener(e -> {
             Replay r = replay.get();
             if (r != null) {
                 r.setSpeed(chosenSpeed());
             }
         });
-        bar.add(runs);
-        bar.add(new JLabel("from s"));
+        replayFrom.setName("replayFrom");
+        replayTo.setName("replayTo");
+        bar.add(new JLabel("from"));
         bar.add(replayFrom);
-        bar.add(new JLabel("to s (after the run's first value)"));
+        bar.add(new JLabel("s to"));
         bar.add(replayTo);
+        bar.add(new JLabel("s after the run's first value, at"));
         bar.add(speed);
         bar.add(play);
         bar.add(hold);
         return bar;
     }
 
-    private double chosenSpeed() {
-        String s = (String) speed.getSelectedItem();
-        return Double.parseDouble(s.substring(0, s.length() - 1));
+    private void fill(List<LoggedNode> nodes, List<RunInfo> runList) {
+        runModel.setRuns(runList);
+        if (!runList.isEmpty()) {
+            runTable.setRowSelectionInterval(0, 0);
+        }
+        status.setText(String.format("%d run%s recorded%s; plotting %d node(s) live — drag Datas from the tree into a"
+                + " plot", runList.size(), runList.size() == 1 ? "" : "s", runList.isEmpty() ? "" : ", newest: "
+                + runList.get(0), live.trackedSources().length));
+        legibleNames(nodes);
+        measureLengths(runList);
     }
 
-    private void showPlot(PlotPanel plot) {
-        centre.removeAll();
-        centre.add(plot, BorderLayout.CENTER);
-        centre.revalidate();
-        centre.repaint();
+    /** Each run's length, measured on a few of its Datas off the event thread, filled in as answers arrive. */
+    private void measureLengths(List<RunInfo> runList) {
+        for (RunInfo r : runList) {
+            int[] ids = r.sourceIds();
+            int[] some = java.util.Arrays.copyOf(ids, Math.min(ids.length, MEASURED_SOURCES));
+            historyLoader.ask(() -> connection.span(some), span -> runModel.setLength(r.runId(),
+                    span == null ? 0 : span[1] - span[0]), e -> LOG.debug("length of {}: {}", r, e.getMessage()));
+        }
     }
 
-    private void plotSelected() {
-        List<LoggedNode> chosen = nodeList.getSelectedValuesList();
-        if (chosen.isEmpty()) {
-            status.setText("select one or more nodes in the list first");
+    /**
+     * The tree and the plots draw the nodes' names in a font that has their characters (Japanese names too);
+     * when no installed font has them, the status bar says so, naming the package to install.
+     */
+    private void legibleNames(List<LoggedNode> nodes) {
+        List<String> names = new ArrayList<>();
+        nodes.forEach(n -> names.add(LoggerConnection.label(n)));
+        LegibleFont.Choice c = LegibleFont.forNames(tree.getFont(), names);
+        tree.setFont(c.font());
+        grid.setFont(c.font());
+        if (!c.legible()) {
+            status.setText(c.warning());
+        }
+    }
+
+    /** The font the node tree shows names in (tests: every name displayable). */
+    public java.awt.Font namesFont() {
+        return tree.getFont();
+    }
+
+    /** One plot per unit of the live selections, in their order. */
+    private void plotPerUnit(List<NodeSelection> selections) {
+        Map<String, List<NodeSelection>> byUnit = new LinkedHashMap<>();
+        selections.forEach(s -> byUnit.computeIfAbsent(s.unit(), u -> new ArrayList<>()).add(s));
+        byUnit.forEach((unit, list) -> grid.addSeries(grid.addPlot(String.join(", ",
+                list.stream().map(NodeSelection::name).toList())), list));
+        if (byUnit.isEmpty()) {
+            grid.addPlot("plot 1");
+        }
+    }
+
+    /** Shows a layout's plots (the live Datas it names are monitored); the one a replay keeps. */
+    public void applyLayout(ViewerLayout layout) {
+        layoutChosen = true;
+        grid.apply(layout);
+        legend.setSelected(layout.legendVisible());
+        showRun(selectedRun());
+    }
+
+    private RunInfo selectedRun() {
+        int row = runTable.getSelectedRow();
+        return row < 0 ? null : runModel.run(row);
+    }
+
+    private void showRun(RunInfo run) {
+        if (run != null) {
+            tree.show(run, grid.data());
+        }
+    }
+
+    /** Monitors live the nodes a plot now holds (in live mode); a node the logger lacks is said, not thrown. */
+    private void watchLive(List<NodeSelection> entries) {
+        if (grid.data() != live) {
             return;
         }
+        List<LoggedNode> nodes = new ArrayList<>();
+        for (NodeSelection s : entries) {
+            try {
+                nodes.add(connection.resolve(new NodeSelection(s.node(), "")));
+            } catch (IllegalArgumentException | IOException e) {
+                status.setText(e.getMessage());
+            }
+        }
         try {
-            connection.watchNodes(chosen);
-            status.setText("plotting " + chosen.size() + " more node(s) live");
-            nodeList.repaint();
+            connection.watchNodes(nodes);
         } catch (IOException e) {
             LOG.warn("monitor request failed: {}", e.getMessage());
             status.setText("the logger refused the monitor request: " + e.getMessage());
         }
+    }
+
+    private void addChosen(PlotView plot) {
+        List<NodeSelection> chosen = tree.chosen();
+        if (chosen.isEmpty()) {
+            status.setText("choose one or more Datas in the tree first (or drag them into a plot)");
+            return;
+        }
+        int n = grid.addSeries(plot, chosen);
+        if (n > 0) {
+            status.setText("added " + n + " Data(s) to '" + plot.title() + "'");
+        }
+    }
+
+    /** The node tree (tests drag from it). */
+    NodeTree tree() {
+        return tree;
+    }
+
+    private void showLive() {
+        pause.setSelected(false);
+        grid.show(live);
+        grid.axis().setPaused(false);
+        showRun(selectedRun());
+    }
+
+    private double chosenSpeed() {
+        String s = (String) speed.getSelectedItem();
+        return Double.parseDouble(s.substring(0, s.length() - 1));
     }
 
     private void loadHistory(String rangeText) {
@@ -308,12 +460,12 @@ public final class ViewerWindow extends JFrame {
             return;
         }
         PlotData history = new PlotData();
+        history.useUnits(units);
         copyTracking(live, history);
         status.setText("loading history " + rangeText.trim() + " from the logger ...");
         historyLoader.load(connection, live.trackedSources(), range[0], range[1], history, n -> {
-            PlotPanel plot = new PlotPanel(history);
-            plot.showRange(range[0], range[1]);
-            showPlot(plot);
+            grid.show(history);
+            grid.axis().showRange(range[0], range[1]);
             status.setText(String.format("history %s: %,d values from the logger (cache + database); press Live to return",
                     rangeText.trim(), n));
         }, e -> status.setText("history failed: " + e.getMessage()));
@@ -327,25 +479,64 @@ public final class ViewerWindow extends JFrame {
         }
     }
 
-    private void exportCsv() {
+    private void openLayout() {
         JFileChooser chooser = new JFileChooser();
-        chooser.setSelectedFile(new java.io.File("fdnet-viewer.csv"));
-        if (chooser.showSaveDialog(this) != JFileChooser.APPROVE_OPTION) {
+        if (chooser.showOpenDialog(this) != JFileChooser.APPROVE_OPTION) {
             return;
         }
-        PlotPanel shown = (PlotPanel) centre.getComponent(0);
+        Path file = chooser.getSelectedFile().toPath();
         try {
-            long rows = CsvExport.write(chooser.getSelectedFile().toPath(), shown.data().series(), shown.viewStart(),
-                    shown.viewEnd());
-            status.setText(String.format("exported %,d values of the visible window to %s", rows, chooser.getSelectedFile()));
-        } catch (IOException e) {
-            status.setText("CSV export to " + chooser.getSelectedFile() + " failed: " + e.getMessage());
+            applyLayout(LayoutFile.read(file));
+            status.setText("layout " + file + ": " + grid.plots().size() + " plots");
+        } catch (IOException | IllegalArgumentException e) {
+            status.setText("layout not opened: " + e.getMessage());
         }
     }
 
-    /** Starts replaying the chosen run's range at the chosen speed into the replay plot (also used by tests). */
+    private void saveLayout() {
+        JFileChooser chooser = new JFileChooser();
+        chooser.setSelectedFile(new java.io.File("fdnet-viewer.layout"));
+        if (chooser.showSaveDialog(this) == JFileChooser.APPROVE_OPTION) {
+            saveLayout(chooser.getSelectedFile().toPath());
+        }
+    }
+
+    /** Writes the plots to a layout file ({@code fdnet viewer --layout FILE} opens it again). */
+    public void saveLayout(Path file) {
+        try {
+            LayoutFile.write(grid.currentLayout(), file);
+            status.setText("layout saved to " + file);
+        } catch (IOException e) {
+            status.setText("layout not saved to " + file + ": " + e.getMessage());
+        }
+    }
+
+    private void exportCsv() {
+        JFileChooser chooser = new JFileChooser();
+        chooser.setSelectedFile(new java.io.File("fdnet-viewer.csv"));
+        if (chooser.showSaveDialog(this) == JFileChooser.APPROVE_OPTION) {
+            exportCsv(chooser.getSelectedFile().toPath());
+        }
+    }
+
+    /** Writes every plotted series' values in the visible time window as CSV; answers the rows written, -1 when it failed. */
+    public long exportCsv(Path file) {
+        try {
+            long rows = CsvExport.write(file, grid.shownSeries(), grid.axis().viewStart(), grid.axis().viewEnd());
+            status.setText(String.format("exported %,d values of the visible window to %s", rows, file));
+            return rows;
+        } catch (IOException e) {
+            status.setText("CSV export to " + file + " failed: " + e.getMessage());
+            return -1;
+        }
+    }
+
+    /**
+     * Starts replaying the chosen run's range at the chosen speed into the plots (also used by tests). Without a
+     * layout chosen, a run a shipped layout fits opens with it.
+     */
     public void startReplay() {
-        RunInfo run = (RunInfo) runs.getSelectedItem();
+        RunInfo run = selectedRun();
         if (run == null) {
             status.setText("the logger has recorded no run yet");
             return;
@@ -365,21 +556,41 @@ public final class ViewerWindow extends JFrame {
             if (old != null) {
                 old.stop();
             }
-            showPlot(replayPlot);
+            pause.setSelected(false);
+            grid.show(replayed); // before a ready layout is applied: its Datas are replayed, not monitored live
+            grid.axis().setPaused(false);
+            String ready = "";
+            if (!layoutChosen) {
+                Optional<ViewerLayout> fits = ReadyLayouts.forNodes(run.nodes().stream().map(LoggerConnection::label).toList());
+                if (fits.isPresent()) {
+                    grid.apply(fits.get());
+                    legend.setSelected(fits.get().legendVisible());
+                    layoutChosen = true;
+                    ready = " in its ready layout";
+                }
+            }
             r.start();
             String range = fromS < 0 ? String.format("its last %.1f s", -fromS) : String.format("%.1f s .. %.1f s", fromS, toS);
-            status.setText(String.format("replaying %s, %s: %,d values at %s", run, range, r.total(), speed.getSelectedItem()));
+            status.setText(String.format("replaying %s (run %d), %s: %,d values at %s%s", run.network().isEmpty()
+                    ? "run " + run.runId() : run.network(), run.runId(), range, r.total(), speed.getSelectedItem(), ready));
+            showRunWhenComponentsKnown(run);
         } catch (IOException | IllegalArgumentException e) {
             status.setText("replay failed: " + e.getMessage());
         }
     }
 
+    /** The tree shows the components of vectors once the replay's first values made them known. */
+    private void showRunWhenComponentsKnown(RunInfo run) {
+        javax.swing.Timer once = new javax.swing.Timer(1500, e -> showRun(run));
+        once.setRepeats(false);
+        once.start();
+    }
+
     /** Selects the run, range and speed of the replay bar (for scripted use and tests). */
     public void chooseReplay(int runId, double fromSeconds, double toSeconds, String speedLabel) {
-        for (int i = 0; i < runs.getItemCount(); i++) {
-            if (runs.getItemAt(i).runId() == runId) {
-                runs.setSelectedIndex(i);
-            }
+        int row = runModel.rowOf(runId);
+        if (row >= 0) {
+            runTable.setRowSelectionInterval(row, row);
         }
         replayFrom.setText(Double.toString(fromSeconds));
         replayTo.setText(Double.toString(toSeconds));
@@ -416,5 +627,4 @@ public final class ViewerWindow extends JFrame {
         connection.close();
         super.dispose();
     }
-
 }

@@ -1,13 +1,16 @@
 /**
- * The viewer's screen: {@link org.fdnet.viewer.ui.ViewerWindow} (node picker, tool bar, replay bar) around
- * {@link org.fdnet.viewer.ui.PlotPanel} (one canvas, one lane per unit, min/max per pixel column, 30
- * frames/s), and {@link org.fdnet.viewer.ui.CsvExport}.
+ * The viewer's screen: {@link org.fdnet.viewer.ui.ViewerWindow} — the logger's runs and the chosen run's Datas
+ * as a tree ({@link org.fdnet.viewer.ui.NodeTree}) on the left, the plots ({@link org.fdnet.viewer.ui.PlotGrid} of
+ * {@link org.fdnet.viewer.ui.PlotView}s, each a {@link org.fdnet.viewer.ui.PlotPanel}: min/max per pixel column,
+ * 30 frames/s) on one shared {@link org.fdnet.viewer.ui.TimeAxis}, the tool bar
+ * ({@link org.fdnet.viewer.ui.ViewerActions}, where every action is registered) and the replay bar.
  *
  * <pre>
- *   LoggerConnection ─▶ PlotData (live) ─▶ PlotPanel ◀─ wheel zoom, drag pan, space pause, cursor read-out
- *   history button ─HistoryLoader (own thread)─▶ PlotData (range) ─event thread─▶ PlotPanel (paused on the range)
- *   replay bar ─ReplayLoader─▶ Replay ─▶ PlotData (replayed) ─▶ PlotPanel
- *   visible window of the shown PlotPanel ─▶ CsvExport ─▶ file.csv
+ *   NodeTree ─drag (SeriesTransfer) / Add to plot─▶ PlotGrid.addSeries ─unit fits?─▶ PlotView (refused: status bar)
+ *   LoggerConnection ─▶ PlotData (live) ─┐
+ *   History ─HistoryLoader─▶ PlotData ───┼─ PlotGrid.show ─▶ every PlotPanel draws its series from it
+ *   replay bar ─ReplayLoader─▶ Replay ───┘        ▲ wheel zoom, drag pan, space pause, cursor: TimeAxis (shared)
+ *   series of every plot, visible window ─▶ CsvExport ─▶ file.csv;  PlotGrid ⇄ ViewerLayout (layout package)
  * </pre>
  *
  * The editor (or any program) opens a plot for chosen nodes with

@@ -16,6 +16,17 @@ class SeriesTest {
     Path folder;
 
     @Test
+    void shouldReadTheValueHeldAtAnInstantNotOneWrittenLater() {
+        Series s = new Series("Balance/margin", "m");
+        s.append(1000, 0.1);
+        s.append(2000, 0.2);
+        assertThat(s.heldAt(999)).as("before its first value").isNull();
+        assertThat(s.heldAt(1000).value()).isEqualTo(0.1);
+        assertThat(s.heldAt(1999).value()).as("held until written again, though 2000 is nearer").isEqualTo(0.1);
+        assertThat(s.heldAt(5000).value()).isEqualTo(0.2);
+    }
+
+    @Test
     void shouldKeepSamplesInOrderAndAnswerRangesAndNearest() {
         Series s = new Series("Arm/Joint", "rad");
         for (int i = 0; i < 5000; i++) {

@@ -16,7 +16,11 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
 
-/** The viewer window under a real X display: live plot, pause, zoom, replay, and {@code fdnet viewer --screenshot}. */
+/**
+ * The viewer window under a real X display (see {@link ViewerScenario}): plots per unit on one linked time axis,
+ * every control visible at the default size, series added and refused by unit, layouts saved and reopened, replay,
+ * RoQ's ready layout, and {@code fdnet viewer --screenshot}.
+ */
 @ExtendWith(RealDisplayExtension.class)
 @Timeout(value = 240, unit = TimeUnit.SECONDS)
 class ViewerWindowDisplayTest {
@@ -24,7 +28,7 @@ class ViewerWindowDisplayTest {
     Path folder;
 
     @Test
-    void shouldPlotLiveValuesPauseReplayAndWriteAScreenshot(RealDisplay display) throws Exception {
+    void shouldPlotOnLinkedAxesKeepUnitsApartReopenLayoutsReplayAndWriteAScreenshot(RealDisplay display) throws Exception {
         Path window = folder.resolve("window.png");
         Path command = folder.resolve("command.png");
         Process p = display.java(ViewerScenario.class, window.toString(), command.toString()).redirectErrorStream(true).start();
@@ -32,8 +36,11 @@ class ViewerWindowDisplayTest {
             boolean done = p.waitFor(200, TimeUnit.SECONDS);
             String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
             assertThat(done).as(out).isTrue();
-            assertThat(out).as(out).contains("STEP live values drawn", "STEP Japanese name legible", "STEP paused and zoomed", "STEP replay",
-                    "STEP command screenshot", "STEP unknown node refused", "STEP all passed");
+            assertThat(out).as(out).contains("STEP live values drawn", "STEP one plot per unit", "STEP Japanese name legible",
+                    "STEP every control visible at 1200x820", "STEP paused, zoomed and cursor linked",
+                    "STEP mixed units refused", "STEP series added to a new plot in m", "STEP dragged into a plot", "STEP replay",
+                    "STEP layout reopened", "STEP RoQ layout", "STEP command screenshot", "STEP unknown node refused",
+                    "STEP all passed");
             assertThat(p.exitValue()).as(out).isZero();
         } finally {
             if (p.isAlive()) {
@@ -44,5 +51,8 @@ class ViewerWindowDisplayTest {
         assertThat(shot.getWidth()).isGreaterThan(800);
         assertThat(ImageIO.read(window.toFile()).getHeight()).isGreaterThan(500);
         Files.copy(command, Path.of("target", "viewer.png"), StandardCopyOption.REPLACE_EXISTING);
+        Files.copy(folder.resolve("viewer-roq.png"), Path.of("target", "viewer-roq.png"), StandardCopyOption.REPLACE_EXISTING);
+        Files.copy(folder.resolve("viewer-roq-no-legend.png"), Path.of("target", "viewer-roq-no-legend.png"),
+                StandardCopyOption.REPLACE_EXISTING);
     }
 }

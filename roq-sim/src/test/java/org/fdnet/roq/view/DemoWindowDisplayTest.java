@@ -34,7 +34,8 @@ class DemoWindowDisplayTest {
             boolean done = p.waitFor(150, TimeUnit.SECONDS);
             String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
             assertThat(done).as(out).isTrue();
-            assertThat(out).as(out).contains("STEP window open", "STEP window updates", "STEP screen captured",
+            assertThat(out).as(out).contains("STEP window open", "STEP window updates",
+                    "STEP every label whole", "STEP screen captured",
                     "STEP all passed", "summary: walked", "margin", "course: cells broken by probes",
                     "loaded-foot breakthroughs", "off the course line max", "heading error max");
             assertThat(p.exitValue()).as(out).isZero();

@@ -12,11 +12,13 @@ import javax.imageio.ImageIO;
 import javax.swing.JFrame;
 import javax.swing.SwingUtilities;
 import org.fdnet.cli.FdnetCommand;
+import org.fdnet.testing.WindowVisibility;
 
 /**
  * Run on a real display by {@link DemoWindowDisplayTest}: {@code fdnet demo --gui --for 6s --no-logger
  * --screenshot SHOT} as the CLI runs it, while a watcher finds the demo window on screen, counts its updates twice
- * and captures the screen where it stands. Prints {@code STEP …} lines; exit 0 when every step passed.
+ * and that every label is whole at the window's default size ({@link WindowVisibility}), and captures the screen
+ * where it stands. Prints {@code STEP …} lines; exit 0 when every step passed.
  * Args: NETWORK SCREENSHOT SCREEN_CAPTURE
  */
 public final class DemoWindowScenario {
@@ -48,6 +50,11 @@ public final class DemoWindowScenario {
         }
         System.out.println("STEP window updates: " + first[0] + " then " + second[0] + " snapshots, path " + second[1]
                 + " points");
+        java.util.List<String> problems = WindowVisibility.problems(SwingUtilities.getWindowAncestor(panel));
+        if (!problems.isEmpty()) {
+            fail("not seen whole at the window's default size: " + problems);
+        }
+        System.out.println("STEP every label whole at " + SwingUtilities.getWindowAncestor(panel).getSize());
         Rectangle where = onScreen(panel);
         BufferedImage screen = new Robot().createScreenCapture(where);
         ImageIO.write(screen, "png", Path.of(args[2]).toFile());

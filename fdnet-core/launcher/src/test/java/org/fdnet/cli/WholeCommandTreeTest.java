@@ -15,7 +15,7 @@ class WholeCommandTreeTest {
     @Test
     void shouldOfferEveryPartsCommands() {
         assertThat(fdnet.getSubcommands()).containsKeys("validate", "info", "fmt", "keys", "run", "naming", "host",
-                "control", "logger", "viewer", "hi", "sim", "demo", "soak", "bench", "sdk", "new");
+                "control", "logger", "export", "viewer", "hi", "sim", "demo", "soak", "bench", "sdk", "new");
         assertThat(fdnet.getSubcommands().get("sdk").getSubcommands()).containsKey("install");
         assertThat(fdnet.getSubcommands().get("new").getSubcommands()).containsKey("nodes");
     }
@@ -23,6 +23,6 @@ class WholeCommandTreeTest {
     @Test
     void shouldOfferEveryBenchModulesBenchmarks() {
         assertThat(fdnet.getSubcommands().get("bench").getSubcommands())
-                .containsOnlyKeys("load", "core", "corba", "logger", "viewer", "hi", "rt", "sim", "roq");
+                .containsOnlyKeys("load", "core", "corba", "logger", "export", "viewer", "hi", "rt", "sim", "roq");
     }
 }

@@ -28,12 +28,8 @@ import picocli.CommandLine.Spec;
         description = {"Start the network state logger: cores connect to the receiver port, viewers to the sender port.",
                 "Headless, it reads commands on standard input: retry (try a database reported DOWN again), status, help."})
 public final class LoggerCommand implements Callable<Integer> {
-    @Option(names = "--db", paramLabel = "URL", description = "external database jdbc:postgresql://HOST:PORT/DB "
-            + "(default: embedded PostgreSQL in ~/.fdnet/logger-db)")
-    String db;
-
-    @Option(names = "--db-user", paramLabel = "USER", description = "user for --db (default postgres)")
-    String dbUser;
+    @Mixin
+    DatabaseOptions database;
 
     @Option(names = "--receiver-port", paramLabel = "P", description = "port for cores (default 5555)")
     Integer receiverPort;
@@ -72,12 +68,7 @@ public final class LoggerCommand implements Callable<Integer> {
         LoggerConfig config;
         try {
             config = LoggerConfigFile.load(file);
-            if (db != null) {
-                config.set(LoggerSetting.DATABASE_URL, db).set(LoggerSetting.DATABASE_EMBEDDED, "false");
-            }
-            if (dbUser != null) {
-                config.set(LoggerSetting.DATABASE_USER, dbUser);
-            }
+            database.applyTo(config);
             if (receiverPort != null) {
                 config.set(LoggerSetting.RECEIVER_PORT, receiverPort.toString());
             }

@@ -138,7 +138,8 @@ public final class SourceDirectory {
         return out;
     }
 
-    private static boolean matches(NodeRef ref, String filter) {
+    /** Whether {@code ref} is named by {@code filter}: {@code ""} (every node), {@code Node} (any module) or {@code Module/Node}. */
+    public static boolean matches(NodeRef ref, String filter) {
         if (filter.isEmpty()) {
             return true;
         }
@@ -146,7 +147,7 @@ public final class SourceDirectory {
         return slash < 0 ? ref.node().equals(filter) : ref.toString().equals(filter);
     }
 
-    static NodeKind kindOf(String text) {
+    public static NodeKind kindOf(String text) {
         return "data".equals(text) ? NodeKind.DATA : NodeKind.RELATION;
     }
 }

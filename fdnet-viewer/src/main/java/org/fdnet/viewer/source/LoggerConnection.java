@@ -198,6 +198,11 @@ public final class LoggerConnection implements AutoCloseable {
         return events;
     }
 
+    /** µs the clock of the host that recorded {@code sourceId} is ahead of its run's coordinator (0 when not known). */
+    public long clockOffsetOf(int sourceId) {
+        return offsetOfSource.getOrDefault(sourceId, 0L);
+    }
+
     /** How a node is named in legends: {@code Module/Node}. */
     public static String label(LoggedNode n) {
         return n.name().module().isEmpty() ? n.name().node() : n.name().module() + "/" + n.name().node();

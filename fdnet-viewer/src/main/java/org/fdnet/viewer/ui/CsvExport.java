@@ -6,6 +6,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import org.fdnet.logger.export.CsvField;
 import org.fdnet.viewer.data.Series;
 
 /**
@@ -23,8 +24,8 @@ public final class CsvExport {
             w.write("series,unit,time_us,value\n");
             for (Series s : series) {
                 Series.Samples samples = s.range(from, to);
-                String name = quote(s.name());
-                String unit = quote(s.unit());
+                String name = CsvField.quote(s.name());
+                String unit = CsvField.quote(s.unit());
                 for (int i = 0; i < samples.size(); i++) {
                     w.write(name);
                     w.write(',');
@@ -39,12 +40,5 @@ public final class CsvExport {
             }
         }
         return rows;
-    }
-
-    private static String quote(String s) {
-        if (s.indexOf(',') < 0 && s.indexOf('"') < 0 && s.indexOf('\n') < 0) {
-            return s;
-        }
-        return '"' + s.replace("\"", "\"\"") + '"';
     }
 }

@@ -79,7 +79,7 @@ public final class ViewerWindow extends JFrame {
     private final JComboBox<String> speed = new JComboBox<>(SPEEDS);
     private final JTextField replayFrom = new JTextField("0", 5);
     private final JTextField replayTo = new JTextField("60", 5);
-    private final JTextField lastSeconds = new JTextField("60", 10);
+    private final JTextField lastSeconds = new JTextField("60", 6);
     private final JToggleButton pause = new JToggleButton("Pause");
     private final JToggleButton legend = new JToggleButton("Legend", true);
     private final AtomicReference<Replay> replay = new AtomicReference<>();
@@ -174,6 +174,37 @@ public final class ViewerWindow extends JFrame {
         return replayed;
     }
 
+    /**
+     * The Datas Export… writes, of the run chosen on the left: those chosen in the tree (a component stands for its
+     * Data), else those plotted.
+     */
+    List<LoggedNode> exportableNodes() {
+        RunInfo run = selectedRun();
+        if (run == null) {
+            return List.of();
+        }
+        java.util.Set<String> names = new java.util.LinkedHashSet<>();
+        tree.chosen().forEach(s -> names.add(dataName(s.name())));
+        if (names.isEmpty()) {
+            grid.shownSeries().forEach(s -> names.add(dataName(s.name())));
+        }
+        return run.nodes().stream().filter(n -> names.contains(LoggerConnection.label(n))).toList();
+    }
+
+    private static String dataName(String series) {
+        int component = series.indexOf('[');
+        return component < 0 ? series : series.substring(0, component);
+    }
+
+    /** The run chosen on the left, or null. */
+    RunInfo exportRun() {
+        return selectedRun();
+    }
+
+    void showStatus(String text) {
+        status.setText(text);
+    }
+
     public LoggerConnection connection() {
         return connection;
     }
@@ -217,7 +248,8 @@ public final class ViewerWindow extends JFrame {
         actions.add("saveLayout", "Save layout…", "the plots and their series to a file (fdnet viewer --layout FILE)",
                 this::saveLayout);
         actions.gap();
-        actions.add("exportCsv", "Export CSV…", "the plotted values of the visible time window as CSV", this::exportCsv);
+        actions.add("exportCsv", "CSV…", "the plotted values of the visible time window as CSV, as drawn", this::exportCsv);
+        actions.add("export", ExportAction.NAME, ExportAction.TOOLTIP, new ExportAction(this));
     }
 
     private JPanel picker() {

@@ -4,7 +4,7 @@
  * commands without depending on the engine.
  *
  * <pre>
- *   bin/fdnet ──▶ FdnetCommand.main ──▶ core commands (validate, info, fmt, keys)
+ *   bin/fdnet ──▶ FdnetCommand.main ──▶ core commands (validate, info [--params: ParameterListing], fmt, keys)
  *                        ├── sdk install ──▶ MavenRun(mvn -B install in fdnet.home) ──▶ InstallProgress: a line per module
  *                        ├── new nodes DIR ──▶ MavenRun(mvn -B -o archetype:generate, FDNet's archetype) ──▶ DIR
  *                        │

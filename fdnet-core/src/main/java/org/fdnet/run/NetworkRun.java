@@ -20,11 +20,13 @@ import org.fdnet.event.EventSink;
 import org.fdnet.event.RunIdentity;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
+import org.fdnet.netinfo.EditRefusedException;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.xml.NetworkFileException;
 import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.NetworkControl;
+import org.fdnet.runtime.NetworkEdits;
 import org.fdnet.runtime.RelationStatus;
 import org.fdnet.runtime.cli.ControlCommands;
 import org.fdnet.runtime.cli.SimulatedPlant;
@@ -37,15 +39,16 @@ import org.fdnet.runtime.loading.ClassLoadingPolicy;
 
 /**
  * One run of a network, start to end, the same on one host and on many: it reads the file, decides the run's
- * identity ({@link RunIdentity}, handed to every host that records it), starts the network here or over its hosts
- * ({@link RunTarget}), applies {@code --load}, {@code --set} and {@code --param} through the run's
+ * identity ({@link RunIdentity}, handed to every host that records it), writes {@code --param} into the definition,
+ * starts the network here or over its hosts ({@link RunTarget}), applies {@code --load} and {@code --set} through the
+ * run's
  * {@link NetworkControl}, publishes the control object, takes standard-input commands, prints a status line each
  * second and a summary, and stops every host's part, committing the run's events, when its time is up, on Ctrl-C
  * or on {@link #stop()}.
  *
  * <pre>
- *   file ─▶ RunIdentity ─▶ LocalTarget (engine [+ plant] [+ LoggerClient])  ─┐
- *                      └─▶ DistributedTarget (DistributedRun: hosts record) ─┴▶ NetworkControl ◀─ --load/--set/--param,
+ *   file + --param ─▶ RunIdentity ─▶ LocalTarget (engine [+ plant] [+ LoggerClient])  ─┐
+ *                      └─▶ DistributedTarget (DistributedRun: hosts record) ─┴▶ NetworkControl ◀─ --load/--set,
  *                                                                                stdin commands, control object
  *   each second: status line ─▶ … ─▶ summary ─▶ stop: every host's part ends, the logger commits its events
  * </pre>
@@ -119,6 +122,9 @@ public final class NetworkRun {
         if (refusal != null) {
             err.println(refusal);
             err.flush();
+            return 2;
+        }
+        if (!applyParameters(definition)) {
             return 2;
         }
         EventCounter counter = new EventCounter();
@@ -309,7 +315,7 @@ public final class NetworkRun {
         }
     }
 
-    /** --load, --set, --param, in that order, through the run's control: on one host or on the node's home. */
+    /** --load, then --set, through the run's control: on one host or on the node's home. */
     private boolean applyRequests(NetworkControl control) {
         for (String module : options.loads) {
             ChangeOutcome o = control.load(module);
@@ -329,16 +335,20 @@ public final class NetworkRun {
                 return refused("--set " + set, o.reason());
             }
         }
+        return true;
+    }
+
+    /**
+     * Every {@code --param} into the definition before the network starts, so a parameter its class reads only at
+     * start (not declared live) takes the value too.
+     */
+    private boolean applyParameters(NetworkInfo definition) {
         for (String p : options.params) {
-            ParameterAssignment assignment;
             try {
-                assignment = ParameterAssignment.parse(p);
-            } catch (IllegalArgumentException e) {
+                ParameterAssignment a = ParameterAssignment.parse(p);
+                NetworkEdits.setParameter(a.node(), a.name(), a.value()).applyTo(definition);
+            } catch (IllegalArgumentException | EditRefusedException e) {
                 return refused("--param " + p, e.getMessage());
-            }
-            ChangeOutcome o = control.setParameter(assignment.node(), assignment.name(), assignment.value());
-            if (!o.executed()) {
-                return refused("--param " + p, o.reason());
             }
         }
         return true;

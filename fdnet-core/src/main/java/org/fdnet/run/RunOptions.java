@@ -23,7 +23,7 @@ public final class RunOptions {
     List<String> sets = new ArrayList<>();
 
     @Option(names = "--param", paramLabel = "MODULE/NODE:NAME=VALUE",
-            description = "set a node parameter once the network runs (repeatable), on whichever host the node runs")
+            description = "set a node parameter before the network starts (repeatable; added when the file does not give it)")
     List<String> params = new ArrayList<>();
 
     @Option(names = "--load", paramLabel = "MODULE", description = "also load this module at start (repeatable)")

@@ -102,4 +102,31 @@ class CoreCommandsTest {
                 .containsPattern("Arm/Hand/Fingers\\s+later").contains("5 modules");
         assertThat(fdnet("validate", "../networks/nested-arm.fdn", "../networks/nested-arm.fdg")).isZero();
     }
+
+    @Test
+    void infoWithParamsShouldListEveryDeclaredParameterWithItsDescription() {
+        assertThat(fdnet("info", "--params", "../networks/arms.fdn")).isZero();
+        assertThat(cli.output()).contains("Relation main/Heartbeat (org.fdnet.runtime.library.PeriodicSource)")
+                .containsPattern("period\\s+20\\s+a whole number above 0 ms; required; may change while running")
+                .containsPattern("frequency\\s+0.5\\s+a number \\(Hz\\); default 1;")
+                .contains("the signal's frequency");
+    }
+
+    @Test
+    void infoWithParamsShouldShowAParameterTheClassDoesNotDeclareAndAClassItCannotFind() throws Exception {
+        Path file = write("odd.fdn", """
+                <?xml version="1.0" encoding="UTF-8"?>
+                <!DOCTYPE cnet SYSTEM "cnet.dtd">
+                <cnet name="odd">
+                    <pstructure><name>Smooth</name><host>localhost</host><path></path>
+                        <class>MovingAverage</class><param name="windw">5</param></pstructure>
+                    <pstructure><name>Lost</name><host>localhost</host><path></path>
+                        <class>org.fdnet.runtime.library.NoSuchRelation</class></pstructure>
+                </cnet>
+                """);
+        assertThat(fdnet("info", "--params", file.toString())).isEqualTo(1);
+        assertThat(cli.output()).containsPattern("windw\\s+5\\s+not declared by MovingAverage")
+                .contains("Relation main/Lost (org.fdnet.runtime.library.NoSuchRelation)")
+                .contains("cannot list its parameters: module 'main', node 'Lost'");
+    }
 }

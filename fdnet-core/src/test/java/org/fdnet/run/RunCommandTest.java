@@ -52,6 +52,21 @@ class RunCommandTest {
     }
 
     @Test
+    void shouldStartWithAParamItsClassReadsOnlyAtStart() {
+        // Integration's 'present' is not declared live: a change of the running node would be refused
+        assertThat(fdnet("run", "../networks/roq-motion.fdn", "--for", "800ms",
+                "--param", "Integration/integrate:present=main/A present posture")).isZero();
+        assertThat(cli.output()).containsPattern("Integration/integrate\\s+[\\d,]+\\s+RUNNING")
+                .contains("failed Relations: none");
+    }
+
+    @Test
+    void shouldExitTwoForAParamOfANodeTheFileDoesNotHave() {
+        assertThat(fdnet("run", "../networks/roq-motion.fdn", "--for", "1s", "--param", "Nobody:x=1")).isEqualTo(2);
+        assertThat(cli.output()).contains("--param Nobody:x=1: module 'main' has no node named 'Nobody'");
+    }
+
+    @Test
     void shouldExitTwoForASetThatDoesNotFit() {
         assertThat(fdnet("run", "../networks/roq-motion.fdn", "--for", "1s", "--set", "A present posture=1 2")).isEqualTo(2);
         assertThat(cli.output()).contains("--set A present posture=1 2").contains("4 are expected");

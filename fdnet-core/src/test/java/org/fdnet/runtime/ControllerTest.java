@@ -69,7 +69,7 @@ class ControllerTest {
             assertThat(dup.reason()).contains("already has a node named 'In'");
             ChangeOutcome badParam = c.setParameter(ref("Gain"), "expression", "3 *");
             assertThat(badParam.executed()).isFalse();
-            assertThat(badParam.reason()).contains("main/Gain: parameter 'expression' does not parse");
+            assertThat(badParam.reason()).contains("module 'main', node 'Gain': parameter 'expression' must be an expression of the inputs");
             assertThat(c.snapshot()).isEqualTo(before);
             c.setValue(ref("In"), "1");
             quiet(net);

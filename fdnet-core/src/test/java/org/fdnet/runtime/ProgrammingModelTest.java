@@ -44,8 +44,8 @@ class ProgrammingModelTest {
         NodeParameters p = new NodeParameters(new NodeRef("Walk", "gait"), List.of(Parameter.named("gain", "fast")));
         assertThatThrownBy(() -> p.requireDouble("gain"))
                 .isInstanceOf(ParameterException.class)
-                .hasMessage("Walk/gait: parameter 'gain' must be a number, but is 'fast'");
-        assertThatThrownBy(() -> p.requireLong("period")).hasMessageContaining("Walk/gait: parameter 'period' is required");
+                .hasMessage("module 'Walk', node 'gait': parameter 'gain' must be a number, was 'fast'");
+        assertThatThrownBy(() -> p.requireLong("period")).hasMessageContaining("module 'Walk', node 'gait': parameter 'period' is required");
     }
 
     @Test
@@ -56,7 +56,7 @@ class ProgrammingModelTest {
         write(n, "main", "Filter", "Out");
         assertThatThrownBy(() -> start(n, null))
                 .isInstanceOf(RuntimeStartException.class)
-                .hasMessageContaining("main/Filter: parameter 'alpha' must be in (0, 1], was 2.5");
+                .hasMessageContaining("module 'main', node 'Filter': parameter 'alpha' must be a number in (0, 1], was 2.5");
     }
 
     @Test

@@ -58,6 +58,15 @@ public record NodeRef(String module, String node) implements Comparable<NodeRef>
         return byModule != 0 ? byModule : node.compareTo(other.node);
     }
 
+    /**
+     * The node as messages name it: {@code module 'M', node 'N'}.
+     *
+     * @return the spelled-out name
+     */
+    public String spelledOut() {
+        return "module '" + module + "', node '" + node + "'";
+    }
+
     @Override
     public String toString() {
         return module + "/" + node;

@@ -10,10 +10,14 @@ import org.fdnet.event.ValueType;
  * wired; the parameter {@code initial}, when present, is the first value (see {@link #initialValue}).
  * Methods are called by the engine only; a Data never holds a lock of its own and never blocks.
  *
- * <p>A Data holding a number that clamps every write into {@code [min, max]}:
+ * <p>A Data holding a number that clamps every write into {@code [min, max]}, its two parameters declared once
+ * ({@link ParameterSpec}):
  *
  * <pre>{@code
  * public class Clamped extends Data {
+ *     public static final ParameterSpec<Double> MIN = ParameterSpec.number("min").describe("the lowest value kept");
+ *     public static final ParameterSpec<Double> MAX = ParameterSpec.number("max").describe("the highest value kept");
+ *
  *     private double min;
  *     private double max;
  *
@@ -24,8 +28,11 @@ import org.fdnet.event.ValueType;
  *
  *     @Override
  *     protected void init(NodeParameters parameters) {
- *         min = parameters.requireDouble("min");
- *         max = parameters.requireDouble("max");
+ *         min = MIN.read(parameters);
+ *         max = MAX.read(parameters);
+ *         if (min > max) {
+ *             throw parameters.conflict(MIN, MAX, "min must not be above max");
+ *         }
  *     }
  *
  *     @Override
@@ -36,6 +43,10 @@ import org.fdnet.event.ValueType;
  * }</pre>
  */
 public abstract class Data {
+    /** The first value, before anyone writes: read by {@link #initialValue} for every Data. */
+    public static final ParameterSpec<String> INITIAL = ParameterSpec.text("initial").defaultDescribed("the type's zero")
+            .describe("the first value, before anyone writes, in the Data's type");
+
     private volatile DataPort port;
 
     /**
@@ -46,8 +57,9 @@ public abstract class Data {
     public abstract ValueType type();
 
     /**
-     * Reads parameters, once, before the Data is wired; throw {@link ParameterException} (via
-     * {@link NodeParameters}) on a bad one.
+     * Reads parameters, once, before the Data is wired, each with its declaration ({@link ParameterSpec#read}); the
+     * engine has already checked every declared one. Throw {@link ParameterException}
+     * ({@link NodeParameters#conflict}) when two disagree.
      *
      * @param parameters the node's parameters as the network file gives them
      * @throws Exception when the node cannot start: the start, module load or change that would make it is
@@ -64,15 +76,15 @@ public abstract class Data {
      * @throws ParameterException when {@code initial} is not a value of {@link #type()}
      */
     protected Value initialValue(NodeParameters parameters) {
-        String initial = parameters.text("initial");
+        String initial = INITIAL.read(parameters);
         if (initial == null) {
             return Value.zero(type());
         }
         try {
             return Value.parse(type(), initial);
         } catch (IllegalArgumentException e) {
-            throw new ParameterException(parameters.node() + ": parameter 'initial' = '" + initial + "' is not a "
-                    + type().name().toLowerCase() + " value", e);
+            throw new ParameterException(parameters.node().spelledOut() + ": parameter 'initial' must be a "
+                    + type().name().toLowerCase(java.util.Locale.ROOT) + " value, was '" + initial.strip() + "'", e);
         }
     }
 

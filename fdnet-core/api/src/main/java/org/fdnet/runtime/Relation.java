@@ -11,15 +11,19 @@ package org.fdnet.runtime;
  * exception from {@code compute} marks the Relation FAILED (its writes of that firing are dropped); a
  * parameter change or a module reload makes a fresh instance.
  *
- * <p>A Relation that scales its first input by the parameter {@code gain} and writes it to every output:
+ * <p>A Relation that scales its first input by the parameter {@code gain} and writes it to every output; it
+ * declares the parameter once ({@link ParameterSpec}), and the engine checks it before {@code init}:
  *
  * <pre>{@code
  * public class Gain extends Relation {
+ *     public static final ParameterSpec<Double> GAIN = ParameterSpec.number("gain").range(0, 10).defaultValue(1.0)
+ *             .describe("the factor the input is multiplied by").live();
+ *
  *     private double gain;
  *
  *     @Override
  *     protected void init(NodeParameters parameters) {
- *         gain = parameters.doubleValue("gain", 1.0);
+ *         gain = GAIN.read(parameters);
  *     }
  *
  *     @Override
@@ -33,9 +37,21 @@ package org.fdnet.runtime;
  * }</pre>
  */
 public abstract class Relation {
+    /** Fire every this many milliseconds; the engine reads it for every Relation. */
+    public static final ParameterSpec<Long> PERIOD = ParameterSpec.whole("period").unit("ms").atLeast(0)
+            .defaultValue(0L).describe("fire every this many milliseconds (0: never by time)").live();
+    /** Fire when a Data it reads changes; the engine reads it for every Relation. */
+    public static final ParameterSpec<Boolean> ON_INPUT = ParameterSpec.flag("onInput")
+            .defaultDescribed("true without a period or with triggers, else false")
+            .describe("fire when a Data it reads changes").live();
+    /** Only these inputs fire it; the engine reads it for every Relation. */
+    public static final ParameterSpec<String> TRIGGERS = ParameterSpec.text("triggers").optional()
+            .describe("comma-separated names of the inputs whose changes fire it (the others are only read)").live();
+
     /**
-     * Reads parameters, once, before the first firing; throw {@link ParameterException} (via {@link NodeParameters})
-     * on a bad one.
+     * Reads parameters, once, before the first firing, each with its declaration ({@link ParameterSpec#read}); the
+     * engine has already checked every declared one. Throw {@link ParameterException}
+     * ({@link NodeParameters#conflict}) when two disagree.
      *
      * @param parameters the node's parameters as the network file gives them
      * @throws Exception when the node cannot start: the start, module load or change that would make it is

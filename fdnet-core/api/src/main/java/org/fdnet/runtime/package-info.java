@@ -7,6 +7,16 @@
  * ({@link org.fdnet.runtime.Controller}). The engine that runs a {@link org.fdnet.netinfo.NetworkInfo}
  * ({@code RuntimeNetwork}) is {@code org.fdnet.runtime.engine}, one layer up.
  *
+ * <p>A node's parameters are declared once, in its class:
+ * <pre>
+ *   static final ParameterSpec fields ──▶ DeclaredParameters (the class's own, then Relation's/Data's: period, ...)
+ *        │                                  ├──▶ engine: checked before init (ParameterException: module, node,
+ *        │                                  │    parameter, range); a live change of one not declared live refused
+ *        │                                  └──▶ fdnet info --params, the editor's node form (descriptions)
+ *        └──▶ init: SPEC.read(parameters) ──▶ the value, default applied
+ * </pre>
+ * {@link org.fdnet.netinfo.ValueRange} words every range, here and in the logger's settings.
+ *
  * <p>This package imports nothing of the engine (ArchitectureTest fails the build otherwise); it imports only
  * {@code netinfo} and {@code event} (fdnet-api). Where the API must reach the engine, the engine implements an
  * interface of this package: {@link org.fdnet.runtime.Data.DataPort} (a Data's current value, its pushes,

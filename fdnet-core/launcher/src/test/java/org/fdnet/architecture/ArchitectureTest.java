@@ -120,8 +120,8 @@ class ArchitectureTest {
                 .whereLayer("Test kit").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine")
                 .whereLayer("Robot test kit").mayOnlyAccessLayers("Api", "Files", "Runtime API", "Nodes", "Engine",
                         "Logger", "Simulator", "Test kit")
-                .whereLayer("Test kit").mayOnlyBeAccessedByLayers("Robot test kit")
-                .whereLayer("Robot test kit").mayNotBeAccessedByAnyLayer()
+                .whereLayer("Test kit").mayOnlyBeAccessedByLayers("Robot test kit", "Bench")
+                .whereLayer("Robot test kit").mayOnlyBeAccessedByLayers("Bench")
                 .whereLayer("Bench").mayNotBeAccessedByAnyLayer();
     }
 }

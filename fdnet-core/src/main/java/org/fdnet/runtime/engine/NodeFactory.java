@@ -3,6 +3,7 @@ package org.fdnet.runtime.engine;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.Data;
+import org.fdnet.runtime.DeclaredParameters;
 import org.fdnet.runtime.NodeLifecycle;
 import org.fdnet.runtime.NodeParameters;
 import org.fdnet.runtime.Relation;
@@ -11,8 +12,9 @@ import org.fdnet.runtime.loading.NodeClassException;
 import org.fdnet.runtime.loading.NodeClassResolver;
 
 /**
- * Makes running nodes from definitions: resolves the class, constructs it, runs {@code init} with the
- * parameters, reads the period. Every failure is a {@link NodeFailure} whose message names the node.
+ * Makes running nodes from definitions: resolves the class, constructs it, checks the parameters against the
+ * class's declarations ({@link DeclaredParameters}), runs {@code init} with them, reads the engine's own ones
+ * (period, onInput, triggers). Every failure is a {@link NodeFailure} whose message names the node.
  */
 final class NodeFactory {
     private final NodeClassResolver resolver;
@@ -31,6 +33,7 @@ final class NodeFactory {
         Data data = (Data) construct(ref, info);
         NodeParameters params = NodeParameters.of(ref, info);
         try {
+            DeclaredParameters.of(data.getClass()).check(params);
             NodeLifecycle.init(data, params);
             Value initial = NodeLifecycle.initialValue(data, params).convertTo(data.type());
             return new PreparedData(data, initial);
@@ -41,9 +44,10 @@ final class NodeFactory {
 
     Relation prepareRelation(NodeRef ref, NodeInfo info) throws NodeFailure {
         Relation relation = (Relation) construct(ref, info);
+        NodeParameters params = NodeParameters.of(ref, info);
         try {
-            periodOf(ref, info);
-            NodeLifecycle.init(relation, NodeParameters.of(ref, info));
+            DeclaredParameters.of(relation.getClass()).check(params);
+            NodeLifecycle.init(relation, params);
             return relation;
         } catch (Exception e) {
             throw new NodeFailure(message(ref, info, e), e);
@@ -57,29 +61,20 @@ final class NodeFactory {
     }
 
     RelationNode relationNode(int id, NodeRef ref, NodeInfo info, Relation relation) {
-        long period = periodOf(ref, info);
         NodeParameters p = NodeParameters.of(ref, info);
-        boolean onInput = p.booleanValue("onInput", period == 0 || p.has("triggers"));
+        long period = Relation.PERIOD.read(p);
+        String triggerNames = Relation.TRIGGERS.read(p);
+        boolean onInput = Relation.ON_INPUT.readOr(p, period == 0 || triggerNames != null);
         java.util.Set<String> triggers = null;
-        if (p.has("triggers")) {
+        if (triggerNames != null) {
             triggers = new java.util.HashSet<>();
-            for (String t : p.text("triggers").split(",")) {
+            for (String t : triggerNames.split(",")) {
                 if (!t.isBlank()) {
                     triggers.add(t.strip());
                 }
             }
         }
         return new RelationNode(id, ref, info, relation, period, onInput, triggers, flow);
-    }
-
-    /** The {@code period} parameter in milliseconds, 0 when absent. */
-    static long periodOf(NodeRef ref, NodeInfo info) {
-        NodeParameters p = NodeParameters.of(ref, info);
-        long period = p.longValue("period", 0);
-        if (period < 0) {
-            throw p.invalid("period", "must be a positive number of milliseconds, was " + period);
-        }
-        return period;
     }
 
     private Object construct(NodeRef ref, NodeInfo info) throws NodeFailure {
@@ -92,7 +87,8 @@ final class NodeFactory {
 
     private static String message(NodeRef ref, NodeInfo info, Exception e) {
         String text = e.getMessage() == null ? e.toString() : e.getMessage();
-        return text.startsWith(ref.toString()) ? text : ref + " (" + info.className() + "): " + text;
+        return text.startsWith(ref.toString()) || text.startsWith(ref.spelledOut()) ? text
+                : ref + " (" + info.className() + "): " + text;
     }
 
     /** A node that cannot be made. */

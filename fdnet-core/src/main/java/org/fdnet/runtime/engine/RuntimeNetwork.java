@@ -363,15 +363,19 @@ public final class RuntimeNetwork implements AutoCloseable {
                 if (info.kind() == NodeKind.DATA) {
                     DataNode live = datas.get(ref);
                     if (live == null || live.standIn || !live.info.equals(info) || restart.contains(ref)) {
+                        refuseFixedParameterChange(ref, live == null || live.standIn ? null : live.info,
+                                live == null ? null : live.data, info);
                         newDatas.put(ref, factory.prepareData(ref, info));
                     }
                 } else {
                     RelationNode live = relations.get(ref);
                     if (live == null || !live.info.equals(info) || restart.contains(ref)) {
+                        refuseFixedParameterChange(ref, live == null ? null : live.info,
+                                live == null ? null : live.relation, info);
                         newRelations.put(ref, factory.prepareRelation(ref, info));
                     }
                 }
-            } catch (NodeFactory.NodeFailure failure) {
+            } catch (NodeFactory.NodeFailure | EditRefusedException failure) {
                 problems.add(failure.getMessage());
             } catch (RuntimeException failure) {
                 problems.add(ref + " (" + info.className() + "): " + failure);
@@ -391,6 +395,16 @@ public final class RuntimeNetwork implements AutoCloseable {
             throw new EditRefusedException(String.join("\n", problems));
         }
         return new Prepared(newDatas, newRelations, broken);
+    }
+
+    /** A running node's change that touches a parameter its class does not declare live is refused. */
+    private static void refuseFixedParameterChange(NodeRef ref, NodeInfo running, Object instance, NodeInfo next) {
+        if (running != null && instance != null) {
+            String refusal = LiveParameterGate.refusal(ref, running, instance.getClass(), next);
+            if (refusal != null) {
+                throw new EditRefusedException(refusal);
+            }
+        }
     }
 
     private void commit(int source, NetworkInfo candidate, Set<String> loadedNext, Set<String> heldNext,

@@ -6,6 +6,7 @@ import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.Parameter;
 import org.fdnet.runtime.NodeDescription;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Servants;
@@ -19,6 +20,13 @@ import org.fdnet.runtime.Servants;
  * input changes. Reports how many filters it made.
  */
 public class AutoFilter extends Relation {
+    public static final ParameterSpec<String> SENSOR_CLASS = ParameterSpec.text("sensorClass")
+            .defaultValue(DoubleSensor.class.getName()).describe("the class of the sensor Datas that get a filter").live();
+    public static final ParameterSpec<Double> ALPHA = ParameterSpec.number("alpha").above(0).atMost(1).defaultValue(0.2)
+            .describe("the alpha of each filter it makes (LowPass)").live();
+    public static final ParameterSpec<String> MODULE = ParameterSpec.text("module").defaultDescribed("the sensor's module")
+            .describe("the module the filters are made in").live();
+
     private String sensorClass;
     private String alpha;
     private String module;
@@ -26,13 +34,9 @@ public class AutoFilter extends Relation {
 
     @Override
     protected void init(NodeParameters p) {
-        sensorClass = p.string("sensorClass", DoubleSensor.class.getName());
-        double a = p.doubleValue("alpha", 0.2);
-        if (!(a > 0 && a <= 1)) {
-            throw p.invalid("alpha", "must be in (0, 1], was " + a);
-        }
-        alpha = Double.toString(a);
-        module = p.string("module", null);
+        sensorClass = SENSOR_CLASS.read(p);
+        alpha = Double.toString(ALPHA.read(p));
+        module = MODULE.read(p);
     }
 
     @Override

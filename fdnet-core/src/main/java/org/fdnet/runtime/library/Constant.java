@@ -4,6 +4,7 @@ import org.fdnet.event.ValueType;
 import org.fdnet.netinfo.Parameter;
 import org.fdnet.netinfo.ParameterType;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -14,11 +15,14 @@ import org.fdnet.runtime.Value;
  * one, a vector if it reads as several, else a text. Useful for set-points and intentions.
  */
 public class Constant extends Relation {
+    public static final ParameterSpec<String> VALUE = ParameterSpec.text("value")
+            .describe("the value written, typed by its type attribute (untyped: a number, numbers, else a text)").live();
+
     private Value value;
 
     @Override
     protected void init(NodeParameters p) {
-        String text = p.requireString("value");
+        String text = VALUE.read(p);
         ParameterType declared = null;
         for (Parameter param : p.all()) {
             if ("value".equals(param.name())) {

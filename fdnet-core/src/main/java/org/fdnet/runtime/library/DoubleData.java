@@ -3,6 +3,7 @@ package org.fdnet.runtime.library;
 import org.fdnet.event.ValueType;
 import org.fdnet.runtime.Data;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Value;
 
 /**
@@ -10,6 +11,11 @@ import org.fdnet.runtime.Value;
  * (optional: values written outside are clamped, so a wild Relation cannot command an impossible value).
  */
 public class DoubleData extends Data {
+    public static final ParameterSpec<Double> MIN = ParameterSpec.number("min").defaultDescribed("none")
+            .describe("values written below it are raised to it").live();
+    public static final ParameterSpec<Double> MAX = ParameterSpec.number("max").defaultDescribed("none")
+            .describe("values written above it are lowered to it").live();
+
     private double min = Double.NEGATIVE_INFINITY;
     private double max = Double.POSITIVE_INFINITY;
 
@@ -20,10 +26,10 @@ public class DoubleData extends Data {
 
     @Override
     protected void init(NodeParameters parameters) {
-        min = parameters.doubleValue("min", min);
-        max = parameters.doubleValue("max", max);
+        min = MIN.readOr(parameters, min);
+        max = MAX.readOr(parameters, max);
         if (min > max) {
-            throw parameters.invalid("min", "(" + min + ") is above max (" + max + ")");
+            throw parameters.conflict(MIN, MAX, "min must not be above max");
         }
     }
 

@@ -3,6 +3,7 @@ package org.fdnet.runtime.library;
 import org.fdnet.event.ValueType;
 import org.fdnet.runtime.Data;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Value;
 
 /**
@@ -11,6 +12,9 @@ import org.fdnet.runtime.Value;
  * (optional: values of another length are refused — a posture always has as many joints as the robot).
  */
 public class DoublesData extends Data {
+    public static final ParameterSpec<Long> LENGTH = ParameterSpec.whole("length").atLeast(1)
+            .defaultDescribed("any length").describe("the number of elements every value must have");
+
     private int length = -1;
 
     @Override
@@ -20,22 +24,15 @@ public class DoublesData extends Data {
 
     @Override
     protected void init(NodeParameters parameters) {
-        long l = parameters.longValue("length", -1);
-        if (l == 0 || l < -1) {
-            throw parameters.invalid("length", "must be a positive number of elements, was " + l);
-        }
-        length = (int) l;
-        if (length > 0 && parameters.has("initial")) {
-            int given = initialValue(parameters).length();
-            if (given != length) {
-                throw parameters.invalid("initial", "has " + given + " values but length is " + length);
-            }
+        length = LENGTH.readOr(parameters, -1L).intValue();
+        if (length > 0 && INITIAL.isGiven(parameters) && initialValue(parameters).length() != length) {
+            throw parameters.conflict(INITIAL, LENGTH, "initial must have length values");
         }
     }
 
     @Override
     protected Value initialValue(NodeParameters parameters) {
-        if (!parameters.has("initial") && length > 0) {
+        if (!INITIAL.isGiven(parameters) && length > 0) {
             return Value.ofDoubles(new double[length]);
         }
         return super.initialValue(parameters);

@@ -1,6 +1,7 @@
 package org.fdnet.runtime.library;
 
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -12,22 +13,17 @@ import org.fdnet.runtime.Value;
  * {@code waiting for inN}. Example: {@code 0.8 * in0 + 0.2 * in1}, {@code mean(in0) + 0.05 * [1, -1, -1, 1] * sin(2*pi*t)}.
  */
 public class Expression extends Relation {
+    public static final ParameterSpec<ExpressionParser.Node> EXPRESSION = ParameterSpec.parsed("expression",
+            "an expression of the inputs (in0, in1, ... or their names)", ExpressionParser::parse)
+            .describe("what is computed and written to every output").live();
+
     private ExpressionParser.Node compiled;
 
     @Override
     protected void init(NodeParameters parameters) {
-        compiled = compile(parameters);
+        compiled = EXPRESSION.read(parameters);
     }
 
-    /** The node's required parameter {@code expression}, compiled; a ParameterException names what does not parse. */
-    static ExpressionParser.Node compile(NodeParameters parameters) {
-        String text = parameters.requireString("expression");
-        try {
-            return ExpressionParser.parse(text);
-        } catch (IllegalArgumentException e) {
-            throw parameters.invalid("expression", "does not parse: " + e.getMessage());
-        }
-    }
 
     @Override
     protected void compute(RelationContext context) {

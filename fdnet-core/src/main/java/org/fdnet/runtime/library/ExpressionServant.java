@@ -5,6 +5,7 @@ import java.util.Map;
 import org.fdnet.event.ValueType;
 import org.fdnet.runtime.MessageRefusedException;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.ServantNode;
@@ -20,6 +21,14 @@ import org.fdnet.runtime.Value;
  * the tree when the Relation leaves the network.
  */
 public class ExpressionServant extends Relation {
+    public static final ParameterSpec<String> SERVANT = ParameterSpec.text("servant")
+            .describe("the path of the servant it offers");
+    public static final ParameterSpec<String> MESSAGE = ParameterSpec.text("message").defaultValue("evaluate")
+            .describe("the message it answers");
+    public static final ParameterSpec<ExpressionParser.Node> EXPRESSION = ParameterSpec.parsed("expression",
+            "an expression of arg and the inputs", ExpressionParser::parse)
+            .describe("the answer, computed from the message's argument arg and the Datas it reads").live();
+
     private String path;
     private String message;
     private ExpressionParser.Node compiled;
@@ -29,9 +38,9 @@ public class ExpressionServant extends Relation {
 
     @Override
     protected void init(NodeParameters parameters) {
-        path = parameters.requireString("servant").strip();
-        message = parameters.string("message", "evaluate").strip();
-        compiled = Expression.compile(parameters);
+        path = SERVANT.read(parameters).strip();
+        message = MESSAGE.read(parameters).strip();
+        compiled = EXPRESSION.read(parameters);
     }
 
     @Override

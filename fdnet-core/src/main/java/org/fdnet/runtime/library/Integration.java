@@ -3,6 +3,7 @@ package org.fdnet.runtime.library;
 import java.util.ArrayList;
 import java.util.List;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -20,6 +21,17 @@ import org.fdnet.runtime.Value;
  * posture feedback loop) converges smoothly. "Move, but just a little" is a judgment between 0 and 1.
  */
 public class Integration extends Relation {
+    public static final ParameterSpec<String> JUDGMENT = ParameterSpec.text("judgment")
+            .describe("the input that holds the judgment (0: do not move, 1: move fully)");
+    public static final ParameterSpec<String> PRESENT = ParameterSpec.text("present").optional()
+            .describe("the input that holds the present posture");
+    public static final ParameterSpec<double[]> WEIGHTS = ParameterSpec.numbers("weights").atLeast(0)
+            .defaultDescribed("equal").describe("each candidate's weight at judgment 0, in input order").live();
+    public static final ParameterSpec<double[]> MOVING_WEIGHTS = ParameterSpec.numbers("movingWeights").atLeast(0)
+            .defaultDescribed("weights").describe("each candidate's weight at judgment 1, in input order").live();
+    public static final ParameterSpec<Double> GAIN = ParameterSpec.number("gain").above(0).atMost(1).defaultValue(1.0)
+            .describe("the share of the way from the present posture to the goal taken each firing").live();
+
     private String judgmentName;
     private String presentName;
     private double[] still;
@@ -28,16 +40,13 @@ public class Integration extends Relation {
 
     @Override
     protected void init(NodeParameters p) {
-        judgmentName = p.requireString("judgment");
-        presentName = p.string("present", null);
-        still = p.doubles("weights", null);
-        moving = p.doubles("movingWeights", still);
-        gain = p.doubleValue("gain", 1.0);
-        if (!(gain > 0 && gain <= 1)) {
-            throw p.invalid("gain", "must be in (0, 1], was " + gain);
-        }
+        judgmentName = JUDGMENT.read(p);
+        presentName = PRESENT.read(p);
+        still = WEIGHTS.read(p);
+        moving = MOVING_WEIGHTS.readOr(p, still);
+        gain = GAIN.read(p);
         if (still != null && moving != null && still.length != moving.length) {
-            throw p.invalid("movingWeights", "has " + moving.length + " weights but weights has " + still.length);
+            throw p.conflict(MOVING_WEIGHTS, WEIGHTS, "movingWeights must have as many weights as weights");
         }
     }
 

@@ -1,6 +1,7 @@
 package org.fdnet.runtime.library;
 
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -11,6 +12,11 @@ import org.fdnet.runtime.Value;
  * input's values, so the filter is right whatever the rate). Vectors are filtered element by element.
  */
 public class LowPass extends Relation {
+    public static final ParameterSpec<Double> ALPHA = ParameterSpec.number("alpha").above(0).atMost(1).optional()
+            .describe("the share of the step toward the input taken every firing (or give cutoff)").live();
+    public static final ParameterSpec<Double> CUTOFF = ParameterSpec.number("cutoff").unit("Hz").above(0).optional()
+            .describe("the cut-off frequency, whatever the input's rate (or give alpha)").live();
+
     private double alpha = Double.NaN;
     private double timeConstant = Double.NaN;
     private double[] y;
@@ -18,20 +24,13 @@ public class LowPass extends Relation {
 
     @Override
     protected void init(NodeParameters p) {
-        if (p.has("alpha") == p.has("cutoff")) {
-            throw p.invalid("alpha", "or 'cutoff' (Hz) is required, and only one of them");
+        if (ALPHA.isGiven(p) == CUTOFF.isGiven(p)) {
+            throw p.conflict(ALPHA, CUTOFF, "give exactly one of them");
         }
-        if (p.has("alpha")) {
-            alpha = p.requireDouble("alpha");
-            if (!(alpha > 0 && alpha <= 1)) {
-                throw p.invalid("alpha", "must be in (0, 1], was " + alpha);
-            }
+        if (ALPHA.isGiven(p)) {
+            alpha = ALPHA.read(p);
         } else {
-            double cutoff = p.requireDouble("cutoff");
-            if (!(cutoff > 0)) {
-                throw p.invalid("cutoff", "must be above 0 Hz, was " + cutoff);
-            }
-            timeConstant = 1.0 / (2 * Math.PI * cutoff);
+            timeConstant = 1.0 / (2 * Math.PI * CUTOFF.read(p));
         }
     }
 

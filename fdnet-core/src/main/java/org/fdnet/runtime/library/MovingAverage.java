@@ -2,6 +2,7 @@ package org.fdnet.runtime.library;
 
 import java.util.ArrayDeque;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -11,17 +12,16 @@ import org.fdnet.runtime.Value;
  * vectors are averaged element by element (a change of length starts the window again).
  */
 public class MovingAverage extends Relation {
+    public static final ParameterSpec<Long> WINDOW = ParameterSpec.whole("window").unit("values").atLeast(1)
+            .defaultValue(10L).describe("how many of the latest values are averaged").live();
+
     private int window;
     private final ArrayDeque<double[]> values = new ArrayDeque<>();
     private double[] sum;
 
     @Override
     protected void init(NodeParameters p) {
-        long w = p.longValue("window", 10);
-        if (w < 1) {
-            throw p.invalid("window", "must be at least 1, was " + w);
-        }
-        window = (int) w;
+        window = WINDOW.read(p).intValue();
     }
 
     @Override

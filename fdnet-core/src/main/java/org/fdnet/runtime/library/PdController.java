@@ -1,6 +1,7 @@
 package org.fdnet.runtime.library;
 
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -13,6 +14,18 @@ import org.fdnet.runtime.Value;
  * measurement's timestamps; the first firing has no derivative.
  */
 public class PdController extends Relation {
+    public static final ParameterSpec<Double> KP = ParameterSpec.number("kp").describe("the proportional gain").live();
+    public static final ParameterSpec<Double> KD = ParameterSpec.number("kd").unit("s").defaultValue(0.0)
+            .describe("the derivative gain").live();
+    public static final ParameterSpec<Double> SETPOINT = ParameterSpec.number("setpoint").defaultValue(0.0)
+            .describe("the set-point, when no input gives it").live();
+    public static final ParameterSpec<Double> LIMIT = ParameterSpec.number("limit").above(0).defaultDescribed("none")
+            .describe("the largest |u| written").live();
+    public static final ParameterSpec<String> MEASUREMENT = ParameterSpec.text("measurement")
+            .defaultDescribed("the first input").describe("the input that holds the measurement");
+    public static final ParameterSpec<String> SETPOINT_INPUT = ParameterSpec.text("setpointInput").optional()
+            .describe("the input that holds the set-point (instead of the parameter setpoint)");
+
     private double kp;
     private double kd;
     private double setpoint;
@@ -24,15 +37,12 @@ public class PdController extends Relation {
 
     @Override
     protected void init(NodeParameters p) {
-        kp = p.requireDouble("kp");
-        kd = p.doubleValue("kd", 0.0);
-        setpoint = p.doubleValue("setpoint", 0.0);
-        limit = p.doubleValue("limit", Double.POSITIVE_INFINITY);
-        if (!(limit > 0)) {
-            throw p.invalid("limit", "must be above 0, was " + limit);
-        }
-        measurementName = p.string("measurement", null);
-        setpointName = p.string("setpointInput", null);
+        kp = KP.read(p);
+        kd = KD.read(p);
+        setpoint = SETPOINT.read(p);
+        limit = LIMIT.readOr(p, Double.POSITIVE_INFINITY);
+        measurementName = MEASUREMENT.read(p);
+        setpointName = SETPOINT_INPUT.read(p);
     }
 
     @Override

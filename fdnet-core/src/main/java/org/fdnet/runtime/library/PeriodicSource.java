@@ -1,7 +1,7 @@
 package org.fdnet.runtime.library;
 
-import java.util.Locale;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -13,6 +13,19 @@ import org.fdnet.runtime.Value;
  * {@code phase} 0 (in cycles). It stands in for a sensor or drives a test.
  */
 public class PeriodicSource extends Relation {
+    public static final ParameterSpec<Long> PERIOD = Relation.PERIOD.above(0).required()
+            .describe("write every this many milliseconds");
+    public static final ParameterSpec<String> WAVEFORM = ParameterSpec.choice("waveform",
+            "sine", "square", "triangle", "sawtooth", "constant").defaultValue("sine").describe("the signal's shape").live();
+    public static final ParameterSpec<Double> AMPLITUDE = ParameterSpec.number("amplitude").defaultValue(1.0)
+            .describe("the signal's amplitude").live();
+    public static final ParameterSpec<Double> FREQUENCY = ParameterSpec.number("frequency").unit("Hz").defaultValue(1.0)
+            .describe("the signal's frequency").live();
+    public static final ParameterSpec<Double> OFFSET = ParameterSpec.number("offset").defaultValue(0.0)
+            .describe("added to the signal").live();
+    public static final ParameterSpec<Double> PHASE = ParameterSpec.number("phase").unit("cycles").defaultValue(0.0)
+            .describe("the signal's phase at time 0").live();
+
     private String waveform;
     private double amplitude;
     private double frequency;
@@ -21,15 +34,11 @@ public class PeriodicSource extends Relation {
 
     @Override
     protected void init(NodeParameters p) {
-        p.requireLong("period");
-        waveform = p.string("waveform", "sine").strip().toLowerCase(Locale.ROOT);
-        amplitude = p.doubleValue("amplitude", 1.0);
-        frequency = p.doubleValue("frequency", 1.0);
-        offset = p.doubleValue("offset", 0.0);
-        phase = p.doubleValue("phase", 0.0);
-        if (!java.util.Set.of("sine", "square", "triangle", "sawtooth", "constant").contains(waveform)) {
-            throw p.invalid("waveform", "must be sine, square, triangle, sawtooth or constant, was '" + waveform + "'");
-        }
+        waveform = WAVEFORM.read(p);
+        amplitude = AMPLITUDE.read(p);
+        frequency = FREQUENCY.read(p);
+        offset = OFFSET.read(p);
+        phase = PHASE.read(p);
     }
 
     @Override

@@ -3,6 +3,7 @@ package org.fdnet.runtime.library;
 import java.io.PrintStream;
 import java.util.Locale;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -14,6 +15,11 @@ import org.fdnet.runtime.Value;
  * Printing to the console is its purpose, so it writes to System.out rather than the log.
  */
 public class Print extends Relation {
+    public static final ParameterSpec<String> PREFIX = ParameterSpec.text("prefix").defaultDescribed("the node's name")
+            .describe("the start of every line").live();
+    public static final ParameterSpec<Long> EVERY = ParameterSpec.whole("every").unit("ms").atLeast(0).defaultValue(0L)
+            .describe("print at most one line per this interval (0: every firing)").live();
+
     private String prefix;
     private long everyMicros;
     private long lastPrinted = Long.MIN_VALUE;
@@ -21,12 +27,8 @@ public class Print extends Relation {
 
     @Override
     protected void init(NodeParameters p) {
-        prefix = p.string("prefix", p.node().node());
-        long every = p.longValue("every", 0);
-        if (every < 0) {
-            throw p.invalid("every", "must be 0 or more milliseconds, was " + every);
-        }
-        everyMicros = every * 1000;
+        prefix = PREFIX.readOr(p, p.node().node());
+        everyMicros = EVERY.read(p) * 1000;
     }
 
     /** For tests: where lines go. */

@@ -1,6 +1,7 @@
 package org.fdnet.runtime.library;
 
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -12,16 +13,16 @@ import org.fdnet.runtime.Value;
  * toward a target that no longer changes.
  */
 public class RateLimiter extends Relation {
+    public static final ParameterSpec<Double> MAX_RATE = ParameterSpec.number("maxRate").unit("units/s").above(0)
+            .describe("the fastest the output follows the input").live();
+
     private double maxRate;
     private double[] out;
     private long lastMicros;
 
     @Override
     protected void init(NodeParameters p) {
-        maxRate = p.requireDouble("maxRate");
-        if (!(maxRate > 0)) {
-            throw p.invalid("maxRate", "must be above 0, was " + maxRate);
-        }
+        maxRate = MAX_RATE.read(p);
     }
 
     @Override

@@ -1,6 +1,7 @@
 package org.fdnet.runtime.library;
 
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -11,11 +12,14 @@ import org.fdnet.runtime.Value;
  * for false, 1 for true; a number is rounded). An index outside the choices is reported and writes nothing.
  */
 public class Selector extends Relation {
+    public static final ParameterSpec<String> SELECT = ParameterSpec.text("select").defaultDescribed("the first input")
+            .describe("the input that holds the index of the choice passed on");
+
     private String selectName;
 
     @Override
     protected void init(NodeParameters p) {
-        selectName = p.string("select", null);
+        selectName = SELECT.read(p);
     }
 
     @Override

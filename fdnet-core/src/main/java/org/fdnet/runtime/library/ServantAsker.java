@@ -5,6 +5,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.Controller;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.ReturnListener;
@@ -18,6 +19,11 @@ import org.fdnet.runtime.Value;
  * at its next firing; the outputs keep their values.
  */
 public class ServantAsker extends Relation {
+    public static final ParameterSpec<String> SERVANT = ParameterSpec.text("servant")
+            .describe("the path of the servant asked").live();
+    public static final ParameterSpec<String> MESSAGE = ParameterSpec.text("message").defaultValue("evaluate")
+            .describe("the message sent").live();
+
     private String path;
     private String message;
     private final AtomicReference<String> lastRefusal = new AtomicReference<>();
@@ -25,8 +31,8 @@ public class ServantAsker extends Relation {
 
     @Override
     protected void init(NodeParameters parameters) {
-        path = parameters.requireString("servant").strip();
-        message = parameters.string("message", "evaluate").strip();
+        path = SERVANT.read(parameters).strip();
+        message = MESSAGE.read(parameters).strip();
     }
 
     @Override

@@ -1,6 +1,7 @@
 package org.fdnet.runtime.library;
 
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -12,6 +13,13 @@ import org.fdnet.runtime.Value;
  * the input's magnitude is compared. Writes on the first firing and whenever the state changes.
  */
 public class Threshold extends Relation {
+    public static final ParameterSpec<Double> HIGH = ParameterSpec.number("high")
+            .describe("the output becomes true when the input rises above it").live();
+    public static final ParameterSpec<Double> LOW = ParameterSpec.number("low").defaultDescribed("high")
+            .describe("the output becomes false when the input falls below it").live();
+    public static final ParameterSpec<Boolean> ABSOLUTE = ParameterSpec.flag("absolute").defaultValue(false)
+            .describe("compare the input's magnitude").live();
+
     private double high;
     private double low;
     private boolean absolute;
@@ -19,11 +27,11 @@ public class Threshold extends Relation {
 
     @Override
     protected void init(NodeParameters p) {
-        high = p.requireDouble("high");
-        low = p.doubleValue("low", high);
-        absolute = p.booleanValue("absolute", false);
+        high = HIGH.read(p);
+        low = LOW.readOr(p, high);
+        absolute = ABSOLUTE.read(p);
         if (low > high) {
-            throw p.invalid("low", "(" + low + ") is above high (" + high + ")");
+            throw p.conflict(LOW, HIGH, "low must not be above high");
         }
     }
 

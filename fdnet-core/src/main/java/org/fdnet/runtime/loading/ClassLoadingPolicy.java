@@ -7,9 +7,9 @@ import java.util.List;
 /**
  * Where node classes may come from. A node with an empty {@code path} names a built-in class: its fully
  * qualified name must lie in one of {@link #builtInPackages()} (a bare name like {@code DoubleData} means
- * {@code org.fdnet.runtime.library.DoubleData}). A node with a {@code path} names a folder or jar that
- * must lie under one of {@link #allowedRoots()} — by default the network file's folder — and its class is
- * loaded by a class loader of its own per path. Nothing else is ever loaded.
+ * {@code org.fdnet.runtime.library.DoubleData}). A node with a {@code path} names a jar, or a folder of classes
+ * and/or jars, that must lie under one of {@link #allowedRoots()} — by default the network file's folder — and its
+ * class is loaded by a class loader of its own per path. Nothing else is ever loaded.
  *
  * @param allowedRoots    folders under which a node's {@code path} may point (real paths are compared,
  *                        so {@code ..} and symbolic links cannot leave them)

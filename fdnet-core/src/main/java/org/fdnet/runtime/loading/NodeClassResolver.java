@@ -1,11 +1,15 @@
 package org.fdnet.runtime.loading;
 
 import java.io.IOException;
+import java.lang.reflect.Modifier;
 import java.net.MalformedURLException;
 import java.net.URL;
 import java.net.URLClassLoader;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import org.fdnet.netinfo.NodeInfo;
@@ -20,6 +24,7 @@ import org.slf4j.LoggerFactory;
  * <pre>
  *   NodeInfo(class, path) ─┬─ path empty ─▶ built-in package? ─▶ runtime's class loader
  *                          └─ path ───────▶ real path under an allowed root? ─▶ one URLClassLoader per path
+ *                                           (a jar; or a folder: its classes and every jar directly in it)
  *                                                 │
  *                          class found, is a Data/Relation as the node's kind says, public no-arg constructor
  * </pre>
@@ -77,7 +82,7 @@ public final class NodeClassResolver implements AutoCloseable {
             throw new NodeClassException(where(ref, node) + ": the node is a " + node.kind().label() + " but its class is "
                     + is + " (a " + node.kind().label() + " class extends " + expected.getName() + ")");
         }
-        if (java.lang.reflect.Modifier.isAbstract(type.getModifiers())) {
+        if (Modifier.isAbstract(type.getModifiers())) {
             throw new NodeClassException(where(ref, node) + ": the class is abstract");
         }
         return type;
@@ -98,7 +103,7 @@ public final class NodeClassResolver implements AutoCloseable {
     }
 
     private Class<?> pathClass(NodeRef ref, NodeInfo node, String name) throws NodeClassException {
-        Path real = allowedPath(ref, node);
+        Path real = allowedPath(node.path(), where(ref, node));
         URLClassLoader loader = loaders.computeIfAbsent(real, this::newLoader);
         try {
             return Class.forName(name, false, loader);
@@ -109,19 +114,74 @@ public final class NodeClassResolver implements AutoCloseable {
         }
     }
 
-    private Path allowedPath(NodeRef ref, NodeInfo node) throws NodeClassException {
-        Path given = policy.baseDirectory().resolve(node.path().strip());
+    /**
+     * The node classes a {@code path} offers, as a node with that path would load them: every public, concrete
+     * Data or Relation class with a public no-argument constructor in the folder, its jars, or the jar. The classes
+     * are loaded but not initialised (no static initialiser runs); one that cannot be loaded is left out.
+     *
+     * @param path a node's {@code path}, relative to the network file's folder
+     * @return the classes, Datas and Relations together, by name
+     * @throws NodeClassException when the path does not exist, is outside the allowed places, or cannot be read
+     */
+    public List<Class<?>> nodeClassesOn(String path) throws NodeClassException {
+        Path real = allowedPath(path, "path '" + path + "'");
+        URLClassLoader loader = loaders.computeIfAbsent(real, this::newLoader);
+        List<String> names;
+        try {
+            names = NodeClassScanner.classNames(real);
+        } catch (IOException e) {
+            throw new NodeClassException("path '" + path + "': cannot read " + real + ": " + e.getMessage(), e);
+        }
+        List<Class<?>> found = new ArrayList<>();
+        for (String name : names) {
+            try {
+                Class<?> type = Class.forName(name, false, loader);
+                if (isNodeClass(type)) {
+                    found.add(type);
+                }
+            } catch (ClassNotFoundException | LinkageError e) {
+                LOG.debug("{} on {} cannot be loaded; not offered as a node class", name, real, e);
+            }
+        }
+        found.sort(Comparator.comparing(Class::getName));
+        return found;
+    }
+
+    private boolean isNodeClass(Class<?> type) {
+        int modifiers = type.getModifiers();
+        if (!Modifier.isPublic(modifiers) || Modifier.isAbstract(modifiers) || type.isInterface()
+                || type.getDeclaringClass() != null && !Modifier.isStatic(modifiers)) {
+            return false;
+        }
+        if (!dataBase.isAssignableFrom(type) && !relationBase.isAssignableFrom(type)) {
+            return false;
+        }
+        try {
+            type.getConstructor();
+            return true;
+        } catch (NoSuchMethodException | LinkageError e) {
+            return false;
+        }
+    }
+
+    /**
+     * The real path a node's {@code path} names, when it lies under an allowed root and is a folder or a jar.
+     *
+     * @param where the node or path, as messages name it
+     */
+    private Path allowedPath(String path, String where) throws NodeClassException {
+        Path given = policy.baseDirectory().resolve(path.strip());
         Path real;
         try {
             real = given.toRealPath();
         } catch (IOException e) {
-            throw new NodeClassException(where(ref, node) + ": path '" + node.path() + "' does not exist (" + given + ")", e);
+            throw new NodeClassException(where + ": path '" + path + "' does not exist (" + given + ")", e);
         }
         for (Path root : policy.allowedRoots()) {
             try {
                 if (real.startsWith(root.toRealPath())) {
-                    if (!Files.isDirectory(real) && !real.toString().endsWith(".jar")) {
-                        throw new NodeClassException(where(ref, node) + ": path '" + node.path() + "' is neither a folder nor a jar");
+                    if (!Files.isDirectory(real) && !NodeClassScanner.isJar(real)) {
+                        throw new NodeClassException(where + ": path '" + path + "' is neither a folder nor a jar");
                     }
                     return real;
                 }
@@ -129,19 +189,32 @@ public final class NodeClassResolver implements AutoCloseable {
                 LOG.debug("allowed root {} does not exist", root, e);
             }
         }
-        throw new NodeClassException(where(ref, node) + ": path '" + node.path() + "' (" + real
+        throw new NodeClassException(where + ": path '" + path + "' (" + real
                 + ") is outside the allowed places " + policy.allowedRoots()
                 + "; move the classes under the network's folder or allow their folder explicitly");
     }
 
+    /** One loader per path: a jar; or a folder's classes and every jar directly in it. */
     private URLClassLoader newLoader(Path real) {
-        try {
-            URL url = real.toUri().toURL();
-            LOG.info("node classes from {}", real);
-            return new URLClassLoader("fdnet-nodes:" + real.getFileName(), new URL[] {url}, builtIn);
-        } catch (MalformedURLException e) {
-            throw new IllegalStateException("cannot make a URL of " + real, e);
+        List<Path> entries = new ArrayList<>();
+        entries.add(real);
+        if (Files.isDirectory(real)) {
+            try {
+                entries.addAll(NodeClassScanner.jarsIn(real));
+            } catch (IOException e) {
+                LOG.warn("cannot list the jars in {}; only its classes are loaded", real, e);
+            }
         }
+        URL[] urls = new URL[entries.size()];
+        for (int i = 0; i < urls.length; i++) {
+            try {
+                urls[i] = entries.get(i).toUri().toURL();
+            } catch (MalformedURLException e) {
+                throw new IllegalStateException("cannot make a URL of " + entries.get(i), e);
+            }
+        }
+        LOG.info("node classes from {}", entries);
+        return new URLClassLoader("fdnet-nodes:" + real.getFileName(), urls, builtIn);
     }
 
     private static String where(NodeRef ref, NodeInfo node) {

@@ -33,6 +33,7 @@ public final class OpenNetwork {
                         String layoutWarning) {
         this.file = file;
         this.editor = new UndoableNetworkEditor(network, layout);
+        this.editor.setNetworkFile(file);
         this.scene = new GraphScene(editor);
         this.doctype = doctype;
         this.comments = comments;
@@ -93,6 +94,7 @@ public final class OpenNetwork {
         NetworkRepository.save(editor.network(), target, doctype, comments);
         LayoutRepository.save(savedLayout(), LayoutRepository.sideFileOf(target));
         file = target;
+        editor.setNetworkFile(target);
         editor.markSaved();
         scene.markLayoutSaved();
     }

@@ -1,5 +1,6 @@
 package org.fdnet.hi.edit;
 
+import java.nio.file.Path;
 import java.util.List;
 
 import org.fdnet.netinfo.ConnectionInfo;
@@ -22,6 +23,14 @@ public interface NetworkEditor {
 
     /** The network being edited; read it, never edit it directly. */
     NetworkInfo network();
+
+    /**
+     * The file the network was read from or last saved to, {@code null} for a network never saved: node paths are
+     * relative to its folder, and node classes may be loaded only from under it.
+     */
+    default Path networkFile() {
+        return null;
+    }
 
     /** Gives the network a new name (saved in the .fdn's {@code cnet name} and the .fdg). */
     EditResult renameNetwork(String newName);

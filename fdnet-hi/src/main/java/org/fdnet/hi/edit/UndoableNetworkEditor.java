@@ -1,5 +1,6 @@
 package org.fdnet.hi.edit;
 
+import java.nio.file.Path;
 import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -33,6 +34,7 @@ public final class UndoableNetworkEditor implements NetworkEditor {
     private final EditHistory history = new EditHistory();
     private final List<EditorListener> listeners = new CopyOnWriteArrayList<>();
     private EditGate gate;
+    private volatile Path networkFile;
 
     public UndoableNetworkEditor(NetworkInfo network, NetworkLayout layout) {
         this.target = new EditTarget(Objects.requireNonNull(network), Objects.requireNonNull(layout));
@@ -41,6 +43,16 @@ public final class UndoableNetworkEditor implements NetworkEditor {
     @Override
     public NetworkInfo network() {
         return target.network();
+    }
+
+    @Override
+    public Path networkFile() {
+        return networkFile;
+    }
+
+    /** Where the network was read from or saved to ({@code null}: never saved). */
+    public void setNetworkFile(Path file) {
+        this.networkFile = file;
     }
 
     /** The view state edited alongside the network (renames carry positions and colours). */

@@ -38,7 +38,9 @@ import org.fdnet.netinfo.ParameterType;
 /**
  * The Advanced Module frame (thesis Chapter 5 §IX): everything about one module, down to a node's parameters —
  * the module's name and load-at-start flag; a Nodes tab (kind, name, host, path, class, Save/Update, Delete,
- * Rename (to a used name: Merge/Replace), and the parameter table with types); a Connections tab whose ends are chosen among existing nodes.
+ * Rename (to a used name: Merge/Replace), the classes the network's paths offer, the parameter table with types, and
+ * the parameters the class declares, with their descriptions); a Connections tab whose ends are chosen among existing
+ * nodes.
  * A thin view: the logic is in {@link ModuleFormModel}, {@link NodeFormModel} and {@link ConnectionFormModel},
  * which share one {@link SpeedyDesign}; each widget registers as a child of the model component it shows.
  */
@@ -63,6 +65,8 @@ public final class AdvancedModuleFrame extends JDialog {
     final JTextField host = new JTextField(12);
     final JTextField path = new JTextField(12);
     final JTextField className = new JTextField(18);
+    final JComboBox<NodeClasses.Choice> classChoice = new JComboBox<>();
+    final JButton rescanClasses = new JButton("Rescan");
     final JButton saveNode = new JButton("Save");
     final JButton deleteNode = new JButton("Delete");
     final JTextField newName = new JTextField(14);
@@ -80,6 +84,7 @@ public final class AdvancedModuleFrame extends JDialog {
         }
     };
     final JTable paramTable = new JTable(paramRows);
+    final DeclaredParametersTable declared = new DeclaredParametersTable();
     // connections tab
     final JComboBox<ConnectionKind> connectionKind = new JComboBox<>(ConnectionKind.values());
     final JComboBox<String> dataEnd = new JComboBox<>();
@@ -162,6 +167,8 @@ public final class AdvancedModuleFrame extends JDialog {
         row(node, 0, "Type :", nodeKind, "Host :", host, saveNode);
         row(node, 1, "Name :", nodeName, "Path :", path, deleteNode);
         row(node, 2, "Rename to :", newName, "Class :", className, renameNode);
+        classChoice.setToolTipText("the Data or Relation classes the network's paths hold; choosing one sets path and class");
+        row(node, 3, null, null, "On the paths :", classChoice, rescanClasses);
 
         JPanel params = new JPanel(new BorderLayout(4, 4));
         params.setBorder(BorderFactory.createTitledBorder("Parameters"));
@@ -173,6 +180,7 @@ public final class AdvancedModuleFrame extends JDialog {
         JScrollPane scroll = new JScrollPane(paramTable);
         scroll.setPreferredSize(new Dimension(560, 110));
         params.add(scroll, BorderLayout.CENTER);
+        params.add(declared, BorderLayout.SOUTH);
 
         JPanel p = new JPanel(new BorderLayout(4, 4));
         p.add(node, BorderLayout.NORTH);
@@ -243,6 +251,14 @@ public final class AdvancedModuleFrame extends JDialog {
             if (selected >= 0 && selected < ps.size()) {
                 paramTable.setRowSelectionInterval(selected, selected);
             }
+            List<NodeClasses.Choice> choices = nodeModel.classChoices();
+            NodeClasses.Choice current = choices.stream().filter(c -> c.className().equals(nodeModel.className())
+                    && c.path().equals(nodeModel.path())).findFirst().orElse(null);
+            QuietRefresh.setItems(classChoice, choices, current);
+            String scanProblem = nodeModel.classScanProblem();
+            classChoice.setToolTipText(scanProblem != null ? scanProblem : choices.isEmpty()
+                    ? "no Data or Relation class on the network's paths" : "choosing one sets path and class");
+            declared.show(nodeModel.declaredParameters(), nodeModel.declaredProblem());
         }), nodeModel.details());
 
         speedy.register("view:node actions", () -> quiet.run(() -> {
@@ -290,6 +306,21 @@ public final class AdvancedModuleFrame extends JDialog {
         quiet.onType(host, nodeModel::typeHost);
         quiet.onType(path, nodeModel::typePath);
         quiet.onType(className, nodeModel::typeClass);
+        quiet.onChoose(classChoice, c -> {
+            if (c != null) {
+                nodeModel.chooseClass(c);
+            }
+        });
+        rescanClasses.addActionListener(e -> nodeModel.rescanClasses());
+        declared.onChoose(name -> {
+            NodeFormModel.Offer offer = nodeModel.offered(name);
+            if (offer != null) {
+                paramName.setText(offer.name());
+                paramType.setSelectedItem(offer.type() == null ? UNTYPED : offer.type().attribute());
+                paramValue.setText(offer.value());
+                status.setText("parameter '" + name + "' offered: give its value, then Add");
+            }
+        });
         saveNode.addActionListener(e -> {
             boolean update = nodeModel.loaded() != null;
             String name = nodeModel.name();

@@ -14,6 +14,7 @@ import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.Parameter;
 import org.fdnet.netinfo.ParameterType;
+import org.fdnet.runtime.ParameterSpec;
 
 /**
  * The logic of the Advanced Module frame's node tab (thesis Chapter 5 §IX): the node being typed, and what
@@ -24,6 +25,9 @@ import org.fdnet.netinfo.ParameterType;
  *   network (root) ─┐
  *   name (root) ────┴▶ existing ─▶ details ─▶ actions (Save/Update label, Delete enabled, why not)
  * </pre>
+ *
+ * The class typed is looked up as a run would look it up ({@link NodeClasses}): the form lists the parameters it
+ * declares, with their descriptions, offers each as a new row, and offers the classes the network's paths hold.
  *
  * Each box is a SpeedyDesign component; a view registers its widgets with {@link #speedy()} as children of
  * {@link #details()} or {@link #actions()}. Edits go through the {@link NetworkEditor} only.
@@ -49,11 +53,13 @@ public final class NodeFormModel {
     private String path = "";
     private String className = "";
     private final List<Parameter> parameters = new ArrayList<>();
+    private final NodeClasses classes;
 
     public NodeFormModel(NetworkEditor editor, String module, SpeedyDesign speedy) {
         this.editor = Objects.requireNonNull(editor, "editor");
         this.module = Objects.requireNonNull(module, "module");
         this.speedy = speedy;
+        this.classes = new NodeClasses(editor::networkFile);
         speedy.register("node:network", network);
         speedy.register("node:name", name);
         speedy.register("node:existing", existing, network, name);
@@ -69,6 +75,7 @@ public final class NodeFormModel {
     /** Stops following the network (the frame closed). */
     public void detach() {
         editor.network().removeListener(listener);
+        classes.close();
     }
 
     public SpeedyDesign speedy() {
@@ -113,6 +120,19 @@ public final class NodeFormModel {
 
     public void typeClass(String text) {
         className = text.strip();
+        speedy.changed(details);
+    }
+
+    /** Takes a class the network's paths offer: its name and its path. */
+    public void chooseClass(NodeClasses.Choice choice) {
+        path = choice.path();
+        className = choice.className();
+        speedy.changed(details);
+    }
+
+    /** Reads the paths' classes again (a jar was rebuilt). */
+    public void rescanClasses() {
+        classes.forget();
         speedy.changed(details);
     }
 
@@ -186,6 +206,47 @@ public final class NodeFormModel {
 
     public List<Parameter> parameters() {
         return List.copyOf(parameters);
+    }
+
+    /** The classes of the chosen kind that the network's paths and the typed path offer. */
+    public List<NodeClasses.Choice> classChoices() {
+        return classes.choices(editor.network(), path, kind);
+    }
+
+    /** Why a path of the last {@link #classChoices} could not be scanned for classes, or null. */
+    public String classScanProblem() {
+        return classes.scanProblem();
+    }
+
+    /** The parameters the typed class declares, its own first (empty when it cannot be found: see {@link #declaredProblem}). */
+    public List<ParameterSpec<?>> declaredParameters() {
+        NodeClasses.Declared d = classes.declared(kind, path, className);
+        return d.parameters() == null ? List.of() : d.parameters().all();
+    }
+
+    /** Why the typed class's parameters cannot be listed, or null. */
+    public String declaredProblem() {
+        return classes.declared(kind, path, className).problem();
+    }
+
+    /** What the parameter fields are filled with when a declared parameter is chosen (type null: untyped). */
+    public record Offer(String name, ParameterType type, String value) {
+    }
+
+    /**
+     * A declared parameter as the fields offer it for adding: its name, its type (text untyped), and its default
+     * value when it has one.
+     *
+     * @return the offer, or null when the typed class declares no parameter of that name
+     */
+    public Offer offered(String declaredName) {
+        for (ParameterSpec<?> spec : declaredParameters()) {
+            if (spec.name().equals(declaredName)) {
+                ParameterType type = spec.fileType() == ParameterType.STRING ? null : spec.fileType();
+                return new Offer(spec.name(), type, spec.hasDefaultValue() ? spec.defaultText() : "");
+            }
+        }
+        return null;
     }
 
     /** "Update" when the typed name is an existing node of the module, else "Save". */

@@ -8,8 +8,10 @@
  *   <li>{@link org.fdnet.hi.text.BasicModuleFrame} — one module: name, load at start, its nodes and
  *       connections by name and in numbers, delete them; opens the Advanced frame.</li>
  *   <li>{@link org.fdnet.hi.text.AdvancedModuleFrame} — one module down to its entities: node tab (typing an
- *       existing name loads the node and turns Save into Update; the parameter table with types), connection
- *       tab (ends chosen among existing nodes only), rename with Merge/Replace ({@code org.fdnet.hi.merge}).</li>
+ *       existing name loads the node and turns Save into Update; the Data and Relation classes the network's
+ *       paths hold; the parameter table with types; the parameters the class declares, with their descriptions,
+ *       {@link org.fdnet.hi.text.DeclaredParametersTable}), connection tab (ends chosen among existing nodes only),
+ *       rename with Merge/Replace ({@code org.fdnet.hi.merge}).</li>
  * </ul>
  *
  * Each frame is a thin Swing view over model classes holding the logic ({@link org.fdnet.hi.text.NetworkSummaryModel},
@@ -21,6 +23,8 @@
  *                                                                               then the widgets depending on them
  *   Save/Delete/Add ─▶ model ─▶ NetworkEditor (one undoable edit) ─▶ NetworkInfo
  *   NetworkInfo change listener (any view's edit, undo, redo) ─▶ model "network" component ─▶ same cascade
+ *   node class typed or chosen ─▶ NodeClasses (the run's class resolver under the network file's policy)
+ *        ─▶ declared parameters, classes on the paths ─▶ node tab
  * </pre>
  *
  * Entry points for the application's menus (all modeless windows owned by {@code owner}; closing one stops it

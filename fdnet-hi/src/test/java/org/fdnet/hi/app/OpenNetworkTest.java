@@ -31,6 +31,16 @@ class OpenNetworkTest {
     }
 
     @Test
+    void shouldTellTheEditorTheFileItsNodePathsAreRelativeTo(@TempDir Path dir) throws Exception {
+        Path fdn = copyRoq(dir);
+        OpenNetwork open = OpenNetwork.load(fdn);
+        assertThat(open.editor().networkFile()).isEqualTo(fdn);
+        Path elsewhere = Files.createDirectories(dir.resolve("elsewhere")).resolve("copy.fdn");
+        open.saveAs(elsewhere);
+        assertThat(open.editor().networkFile()).isEqualTo(elsewhere);
+    }
+
+    @Test
     void shouldReportEveryProblemOfABadFileWithItsLineAndColumn(@TempDir Path dir) throws Exception {
         Path bad = dir.resolve("bad.fdn");
         Files.writeString(bad, "<?xml version=\"1.0\"?>\n<cnet name=\"x\">\n  <dstructure>\n    <name>a</name>\n  </dstructure>\n</cnet>\n");

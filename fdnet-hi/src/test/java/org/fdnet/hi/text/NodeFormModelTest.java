@@ -2,6 +2,7 @@ package org.fdnet.hi.text;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.nio.file.Path;
 import java.util.List;
 
 import org.fdnet.hi.speedy.SpeedyDesign;
@@ -11,7 +12,10 @@ import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.Parameter;
 import org.fdnet.netinfo.ParameterType;
+import org.fdnet.runtime.ParameterSpec;
+import org.fdnet.testing.NodeJars;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 class NodeFormModelTest {
     private final NetworkInfo network = SampleNetwork.create();
@@ -152,5 +156,67 @@ class NodeFormModelTest {
 
         assertThat(arm.module()).isEqualTo("LeftArm");
         assertThat(arm.loaded()).isEqualTo(new NodeRef("LeftArm", "Angle"));
+    }
+
+    @Test
+    void shouldListTheParametersTheTypedClassDeclaresWithTheirDescriptions() {
+        type("Switch");
+        form.chooseKind(NodeKind.RELATION);
+        form.typeClass("org.fdnet.runtime.library.Threshold");
+        assertThat(form.declaredProblem()).isNull();
+        assertThat(form.declaredParameters()).extracting(ParameterSpec::name)
+                .startsWith("high", "low", "absolute").contains("period");
+        assertThat(form.declaredParameters().get(0).description())
+                .isEqualTo("the output becomes true when the input rises above it");
+    }
+
+    @Test
+    void shouldOfferADeclaredParameterWithItsTypeAndDefaultValue() {
+        form.chooseKind(NodeKind.RELATION);
+        form.typeClass("org.fdnet.runtime.library.Threshold");
+        assertThat(form.offered("absolute")).isEqualTo(new NodeFormModel.Offer("absolute", ParameterType.BOOLEAN, "false"));
+        assertThat(form.offered("high")).isEqualTo(new NodeFormModel.Offer("high", ParameterType.DOUBLE, ""));
+        assertThat(form.offered("triggers")).isEqualTo(new NodeFormModel.Offer("triggers", null, ""));
+        assertThat(form.offered("nonsense")).isNull();
+    }
+
+    @Test
+    void shouldSayWhyTheParametersOfAClassItCannotFindAreNotListed() {
+        form.chooseKind(NodeKind.RELATION);
+        form.typeClass("org.fdnet.runtime.library.NoSuchRelation");
+        assertThat(form.declaredParameters()).isEmpty();
+        assertThat(form.declaredProblem()).contains("class 'org.fdnet.runtime.library.NoSuchRelation'")
+                .contains("no such built-in class");
+    }
+
+    @Test
+    void shouldOfferTheClassesOfTheKindChosenThatTheNetworksPathsHold(@TempDir Path dir) throws Exception {
+        Path classes = NodeJars.compileEmit(dir.resolve("classes"), "1");
+        NodeJars.compile(classes, "Level", "public class Level extends org.fdnet.runtime.library.DoubleData {}\n");
+        NodeJars.jar(classes, dir.resolve("lib/nodes.jar"));
+        NetworkInfo withJar = new NetworkInfo("jarred");
+        withJar.addNode("main", new NodeInfo(NodeKind.RELATION, "Source", "localhost", "lib/nodes.jar", "plugin.Emit",
+                List.of()));
+        NodeFormModel jarForm = new NodeFormModel(new PlainNetworkEditor(withJar, dir.resolve("jarred.fdn")), "main",
+                new SpeedyDesign());
+        try {
+            jarForm.chooseKind(NodeKind.DATA);
+            assertThat(jarForm.classChoices()).containsExactly(new NodeClasses.Choice("plugin.Level", "lib/nodes.jar"));
+            jarForm.chooseKind(NodeKind.RELATION);
+            assertThat(jarForm.classChoices()).containsExactly(new NodeClasses.Choice("plugin.Emit", "lib/nodes.jar"));
+            jarForm.chooseClass(jarForm.classChoices().get(0));
+            assertThat(jarForm.path()).isEqualTo("lib/nodes.jar");
+            assertThat(jarForm.className()).isEqualTo("plugin.Emit");
+            assertThat(jarForm.declaredParameters()).extracting(ParameterSpec::name)
+                    .containsExactly("period", "onInput", "triggers");
+            jarForm.typePath("../outside");
+            assertThat(jarForm.classChoices()).hasSize(1);
+            assertThat(jarForm.classScanProblem()).contains("path '../outside'");
+            jarForm.typePath("lib/nodes.jar");
+            assertThat(jarForm.classChoices()).hasSize(1);
+            assertThat(jarForm.classScanProblem()).as("a path typed on from a bad one").isNull();
+        } finally {
+            jarForm.detach();
+        }
     }
 }

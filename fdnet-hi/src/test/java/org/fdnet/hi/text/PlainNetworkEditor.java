@@ -1,5 +1,6 @@
 package org.fdnet.hi.text;
 
+import java.nio.file.Path;
 import java.util.List;
 import java.util.function.Supplier;
 
@@ -18,9 +19,21 @@ import org.fdnet.netinfo.Parameter;
  */
 public final class PlainNetworkEditor implements NetworkEditor {
     private final NetworkInfo network;
+    private final Path file;
 
     public PlainNetworkEditor(NetworkInfo network) {
+        this(network, null);
+    }
+
+    /** An editor of {@code network} read from {@code file} (node paths are relative to its folder). */
+    public PlainNetworkEditor(NetworkInfo network, Path file) {
         this.network = network;
+        this.file = file;
+    }
+
+    @Override
+    public Path networkFile() {
+        return file;
     }
 
     @Override

@@ -32,6 +32,7 @@ class TextFramesDisplayTest {
             assertThat(p.waitFor(120, TimeUnit.SECONDS)).as("scenario finished").isTrue();
             String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
             assertThat(out).as(out).contains("STEP existing name loads node and Update",
+                    "STEP declared parameters listed and offered",
                     "STEP connection fields offer only existing nodes", "STEP deleting a node deletes its connections",
                     "STEP frames refresh on changes from elsewhere", "STEP network renamed from the Network frame",
                     "STEP rename to a used name asks merge or replace", "STEP all passed");

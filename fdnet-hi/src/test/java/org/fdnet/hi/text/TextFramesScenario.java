@@ -21,6 +21,7 @@ import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.ConnectionKind;
 import org.fdnet.netinfo.ModuleCounts;
 import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
 
 /**
@@ -113,6 +114,32 @@ public final class TextFramesScenario {
             check(basic.nodeRows.contains("Data Brake"), "Basic frame lists Brake");
         });
         step("new node saved and counted");
+
+        // the class's declared parameters are listed with their descriptions; one chosen is offered for Add
+        onEdt(() -> {
+            advanced.nodeKind.setSelectedItem(NodeKind.RELATION);
+            advanced.path.setText(""); // a built-in class
+            advanced.className.setText("");
+        });
+        type(advanced.className, "Threshold");
+        onEdt(() -> {
+            int listed = advanced.declared.rows.getRowCount();
+            check(listed == 6, "Threshold's 6 declared parameters listed, not " + listed + ": " + advanced.declared.note.getText());
+            check("high".equals(advanced.declared.rows.getValueAt(0, 0)), "the class's own first");
+            check(String.valueOf(advanced.declared.rows.getValueAt(0, 4)).contains("rises above"), "with a description");
+            advanced.declared.table.setRowSelectionInterval(2, 2);
+            check(advanced.paramName.getText().equals("absolute"), "chosen parameter offered: " + advanced.paramName.getText());
+            check("boolean".equals(advanced.paramType.getSelectedItem()), "with its type");
+            check(advanced.paramValue.getText().equals("false"), "and its default value");
+            advanced.paramName.setText("");
+            advanced.paramValue.setText("");
+            advanced.className.setText("fdnet.Brake");
+            advanced.path.setText("/opt/nodes");
+            advanced.nodeKind.setSelectedItem(NodeKind.DATA);
+            check(advanced.declared.note.getText().contains("class 'fdnet.Brake'"), "why Brake's are not listed: "
+                    + advanced.declared.note.getText());
+        });
+        step("declared parameters listed and offered");
 
         // connection ends offer only existing nodes
         onEdt(() -> {

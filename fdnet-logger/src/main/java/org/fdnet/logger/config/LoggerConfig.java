@@ -3,10 +3,12 @@ package org.fdnet.logger.config;
 import java.nio.file.Path;
 import java.util.EnumMap;
 import java.util.Map;
+import org.fdnet.netinfo.ValueRange;
 
 /**
  * The logger's configuration: every parameter of the thesis's panels, validated when set with a message
- * naming the parameter, the rule and the value ({@code "writer.batchSize must be at least 1, was 0"}),
+ * naming the parameter, the rule and the value ({@code "writer.batchSize must be in [1, 1000000], was 0"}, worded by
+ * {@link ValueRange} as node parameters are),
  * and sealed when the logger starts: a started logger's settings cannot change under it.
  *
  * <p>Values are kept as text keyed by {@link LoggerSetting} (so the file, the command line and the panel
@@ -129,12 +131,7 @@ public final class LoggerConfig {
         } catch (NumberFormatException e) {
             throw new IllegalArgumentException(s.key() + " must be a whole number, was '" + v + "'", e);
         }
-        if (n < min) {
-            throw new IllegalArgumentException(s.key() + " must be at least " + min + ", was " + n);
-        }
-        if (n > max) {
-            throw new IllegalArgumentException(s.key() + " must be at most " + max + ", was " + n);
-        }
+        ValueRange.closed(min, max).check(s.key(), n, "");
     }
 
     private void checkLevels() {

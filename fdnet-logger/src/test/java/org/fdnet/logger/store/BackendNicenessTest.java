@@ -45,9 +45,9 @@ class BackendNicenessTest {
     @Test
     void shouldRefuseANiceValueOutsideZeroToNineteen() {
         assertThatThrownBy(() -> new LoggerConfig().set(LoggerSetting.WRITER_BACKEND_NICENESS, "20"))
-                .hasMessage("writer.backendNiceness must be at most 19, was 20");
+                .hasMessage("writer.backendNiceness must be in [0, 19], was 20");
         assertThatThrownBy(() -> new LoggerConfig().set(LoggerSetting.WRITER_BACKEND_NICENESS, "-1"))
-                .hasMessage("writer.backendNiceness must be at least 0, was -1");
+                .hasMessage("writer.backendNiceness must be in [0, 19], was -1");
     }
 
     private static long backendPid(Connection c) throws SQLException {

@@ -67,7 +67,7 @@ public final class ConfigPanelScenario {
             return null;
         });
         String refused = onEdt(() -> find(panel, "message", JLabel.class).getText());
-        check(refused.equals("writer.batchSize must be at least 1, was 0"), "bad value refused: " + refused);
+        check(refused.equals("writer.batchSize must be in [1, 1000000], was 0"), "bad value refused: " + refused);
         onEdt(() -> {
             batch.setText("500");
             find(panel, "start", AbstractButton.class).doClick();

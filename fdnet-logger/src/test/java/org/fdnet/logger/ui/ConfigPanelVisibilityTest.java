@@ -29,8 +29,8 @@ class ConfigPanelVisibilityTest {
         Path png = folder.resolve("logger-config.png");
         String first = run(display, file.toString(), "change", png.toString());
         assertThat(first).contains("SIZE 1024x700", "VISIBLE").doesNotContain("PROBLEM");
-        assertThat(first).contains("REASON writer.batchSize must be at least 1, was 0", "OUTLINE error",
-                "START REFUSED writer.batchSize must be at least 1, was 0", "HELP events per COPY transaction",
+        assertThat(first).contains("REASON writer.batchSize must be in [1, 1000000], was 0", "OUTLINE error",
+                "START REFUSED writer.batchSize must be in [1, 1000000], was 0", "HELP events per COPY transaction",
                 "SAVED true");
         assertThat(file).content().contains("writer.batchSize=750");
 

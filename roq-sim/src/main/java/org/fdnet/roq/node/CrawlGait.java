@@ -3,6 +3,7 @@ package org.fdnet.roq.node;
 import static org.fdnet.roq.sim.RoqGeometry.*;
 
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -109,52 +110,50 @@ public class CrawlGait extends Relation {
     /** The longest the phase waits for a swinging foot to clear the ground, s. */
     static final double MOST_LIFT_WAIT = 1.0;
 
+    public static final ParameterSpec<Double> CYCLE = ParameterSpec.number("cycle").unit("s").atLeast(0.5).defaultValue(5.0)
+            .describe("the time of one cycle, each leg owning a quarter of it");
+    public static final ParameterSpec<Double> STRIDE = ParameterSpec.number("stride").unit("m").range(0, 0.3)
+            .defaultValue(0.15).describe("how far each swing moves the leg forward");
+    public static final ParameterSpec<Double> CLEARANCE = ParameterSpec.number("clearance").unit("m").range(0, 0.15)
+            .defaultValue(0.06).describe("how high the swinging foot goes");
+    public static final ParameterSpec<Double> HEIGHT = ParameterSpec.number("height").unit("m").range(0.15, 0.4)
+            .defaultValue(0.27).describe("the body's height the feet are placed for");
+    public static final ParameterSpec<Double> SWING = ParameterSpec.number("swing").unit("cycle").range(0.05, 0.25)
+            .defaultValue(0.14).describe("the part of the cycle each leg is in the air (one leg at a time)");
+    public static final ParameterSpec<Double> SHIFT = ParameterSpec.number("shift").unit("cycle").range(0, 0.2)
+            .defaultValue(0.08).describe("the part of each quarter before its leg lifts (swing + shift at most 0.25)");
+    public static final ParameterSpec<Double> RETREAT = ParameterSpec.number("retreat").unit("m").atLeast(0)
+            .defaultValue(0.08).describe("how much shorter the next step is after a foothold gave way (at most stride + 0.1)");
+    public static final ParameterSpec<Long> TRIES = ParameterSpec.whole("tries").range(1, 10).defaultValue(3L)
+            .describe("footholds probed at most per touchdown");
+    public static final ParameterSpec<Double> RISE = ParameterSpec.number("rise").unit("swing").range(0, 0.45)
+            .defaultValue(0.0).describe("the part of each swing in which the foot only rises (lift-off by contact)");
+    public static final ParameterSpec<Double> SETTLE = ParameterSpec.number("settle").unit("s").range(0, 30)
+            .defaultValue(0.0).describe("how long RoQ stands from the first firing before its first step");
+    public static final ParameterSpec<Double> STANCE = ParameterSpec.number("stance").unit("m")
+            .range(HIP_POSITION[0][1], 0.5).defaultDescribed("the standing pose's")
+            .describe("how far each foot stands from the body's centre line");
+
     @Override
     protected void init(NodeParameters p) {
-        cycle = p.doubleValue("cycle", 5.0);
-        stride = p.doubleValue("stride", 0.15);
-        clearance = p.doubleValue("clearance", 0.06);
-        height = p.doubleValue("height", 0.27);
-        if (cycle < 0.5) {
-            throw p.invalid("cycle", "must be at least 0.5 s, was " + cycle);
+        cycle = CYCLE.read(p);
+        stride = STRIDE.read(p);
+        clearance = CLEARANCE.read(p);
+        height = HEIGHT.read(p);
+        swing = SWING.read(p);
+        shift = SHIFT.read(p);
+        if (shift + swing > 0.25 + 1e-9) {
+            throw p.conflict(SHIFT, SWING, "swing + shift must be at most 0.25 of the cycle (one leg in the air at a time)");
         }
-        if (stride < 0 || stride > 0.3) {
-            throw p.invalid("stride", "must lie between 0 and 0.3 m, was " + stride);
+        retreat = RETREAT.read(p);
+        if (retreat > stride + 0.1) {
+            throw p.conflict(RETREAT, STRIDE, "retreat must be at most stride + 0.1 m");
         }
-        if (clearance < 0 || clearance > 0.15) {
-            throw p.invalid("clearance", "must lie between 0 and 0.15 m, was " + clearance);
-        }
-        if (height < 0.15 || height > 0.4) {
-            throw p.invalid("height", "must lie between 0.15 and 0.4 m, was " + height);
-        }
-        swing = p.doubleValue("swing", 0.14);
-        shift = p.doubleValue("shift", 0.08);
-        if (swing < 0.05 || swing > 0.25) {
-            throw p.invalid("swing", "must lie between 0.05 and 0.25 of the cycle (one leg in the air at a time), was "
-                    + swing);
-        }
-        if (shift < 0 || shift + swing > 0.25 + 1e-9) {
-            throw p.invalid("shift", "must lie between 0 and 0.25 - swing (" + (0.25 - swing) + ") of the cycle, was "
-                    + shift);
-        }
-        retreat = p.doubleValue("retreat", 0.08);
-        tries = (int) p.longValue("tries", 3);
-        if (retreat < 0 || retreat > stride + 0.1) {
-            throw p.invalid("retreat", "must lie between 0 and stride + 0.1 m, was " + retreat);
-        }
-        if (tries < 1 || tries > 10) {
-            throw p.invalid("tries", "must lie between 1 and 10, was " + tries);
-        }
-        rise = p.doubleValue("rise", 0);
-        if (rise < 0 || rise > 0.45) {
-            throw p.invalid("rise", "must lie between 0 and 0.45 of the swing, was " + rise);
-        }
-        settle = p.doubleValue("settle", 0);
-        if (settle < 0 || settle > 30) {
-            throw p.invalid("settle", "must lie between 0 and 30 s, was " + settle);
-        }
+        tries = TRIES.read(p).intValue();
+        rise = RISE.read(p);
+        settle = SETTLE.read(p);
         phase = settle > 0 ? 0.25 : 0;
-        maxStep = 4 * p.longValue("period", 10) / 1000.0;
+        maxStep = 4 * PERIOD.readOr(p, 10L) / 1000.0;
         double[] foot = new double[3];
         for (int leg = 0; leg < LEGS; leg++) {
             footInBody(leg, STANDING_POSE[0], STANDING_POSE[1], STANDING_POSE[2], foot);
@@ -163,10 +162,7 @@ public class CrawlGait extends Relation {
             home[3 * leg + 2] = -(height - FOOT_RADIUS);
             side[leg] = Math.abs(foot[1]);
         }
-        stance = p.doubleValue("stance", side[0]);
-        if (stance < HIP_POSITION[0][1] || stance > 0.5) {
-            throw p.invalid("stance", "must lie between " + HIP_POSITION[0][1] + " and 0.5 m, was " + stance);
-        }
+        stance = STANCE.readOr(p, side[0]);
     }
 
     @Override

@@ -1,6 +1,7 @@
 package org.fdnet.roq.node;
 
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -14,12 +15,12 @@ public class FallDetector extends Relation {
     private double limit;
     private boolean fallen;
 
+    public static final ParameterSpec<Double> LIMIT = ParameterSpec.number("limit").unit("rad").above(0).below(Math.PI)
+            .defaultValue(0.6).describe("the roll or pitch beyond which RoQ has fallen").live();
+
     @Override
     protected void init(NodeParameters p) {
-        limit = p.doubleValue("limit", 0.6);
-        if (!(limit > 0 && limit < Math.PI)) {
-            throw p.invalid("limit", "must lie between 0 and pi rad, was " + limit);
-        }
+        limit = LIMIT.read(p);
     }
 
     @Override

@@ -5,6 +5,7 @@ import static org.fdnet.roq.sim.RoqGeometry.LEGS;
 import java.util.Locale;
 import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -66,37 +67,33 @@ public class HoldCourse extends Relation {
     /** How long the heading took the gyro's uncorrected rate while RoQ stood, s. */
     private double settled;
 
+    public static final ParameterSpec<Double> CONTACT = ParameterSpec.number("contact").unit("N").above(0).defaultValue(20.0)
+            .describe("the sole force above which a foot bears load (its odometry counts)");
+    public static final ParameterSpec<Double> SPEED = ParameterSpec.number("speed").unit("m/s").range(0, 0.5)
+            .defaultValue(0.03).describe("the crawl's speed, for dead reckoning along the heading");
+    public static final ParameterSpec<Double> TRACK = ParameterSpec.number("track").unit("rad/m").atLeast(0)
+            .defaultValue(1.5).describe("the heading wished for per metre of lateral error");
+    public static final ParameterSpec<Double> GAIN = ParameterSpec.number("gain").atLeast(0).defaultValue(0.8)
+            .describe("the turn per radian of heading error");
+    public static final ParameterSpec<Double> MAX_HEADING = ParameterSpec.number("maxHeading").unit("rad").above(0)
+            .atMost(1.5).defaultValue(0.35).describe("the most the wished heading leaves the line");
+    public static final ParameterSpec<Double> MAX_TURN = ParameterSpec.number("maxTurn").unit("rad per stance").above(0)
+            .atMost(0.3).defaultValue(0.25).describe("the largest turn asked of the gait");
+    public static final ParameterSpec<Double> BIAS_TIME = ParameterSpec.number("biasTime").unit("s").range(1, 1000)
+            .or(0.0).defaultValue(20.0).describe("the time constant the gyro's bias is learnt with from odometry (0: off)");
+    public static final ParameterSpec<Double> CALIBRATE = ParameterSpec.number("calibrate").unit("s").range(0, 30)
+            .defaultValue(0.0).describe("measure the gyro's bias while RoQ stands this long at the start (0: off)");
+
     @Override
     protected void init(NodeParameters p) {
-        contact = p.doubleValue("contact", 20);
-        speed = p.doubleValue("speed", 0.03);
-        if (speed < 0 || speed > 0.5) {
-            throw p.invalid("speed", "must lie between 0 and 0.5 m/s, was " + speed);
-        }
-        trackGain = p.doubleValue("track", 1.5);
-        gain = p.doubleValue("gain", 0.8);
-        maxHeading = p.doubleValue("maxHeading", 0.35);
-        maxTurn = p.doubleValue("maxTurn", 0.25);
-        biasTime = p.doubleValue("biasTime", 20);
-        calibrate = p.doubleValue("calibrate", 0);
-        if (biasTime != 0 && (biasTime < 1 || biasTime > 1000)) {
-            throw p.invalid("biasTime", "must be 0 (off) or lie between 1 and 1000 s, was " + biasTime);
-        }
-        if (calibrate < 0 || calibrate > 30) {
-            throw p.invalid("calibrate", "must lie between 0 and 30 s, was " + calibrate);
-        }
-        if (contact <= 0) {
-            throw p.invalid("contact", "must be more than 0 N, was " + contact);
-        }
-        if (trackGain < 0 || gain < 0) {
-            throw p.invalid(trackGain < 0 ? "track" : "gain", "must not be negative");
-        }
-        if (maxHeading <= 0 || maxHeading > 1.5) {
-            throw p.invalid("maxHeading", "must lie in (0, 1.5] rad, was " + maxHeading);
-        }
-        if (maxTurn <= 0 || maxTurn > 0.3) {
-            throw p.invalid("maxTurn", "must lie in (0, 0.3] rad per stance, was " + maxTurn);
-        }
+        contact = CONTACT.read(p);
+        speed = SPEED.read(p);
+        trackGain = TRACK.read(p);
+        gain = GAIN.read(p);
+        maxHeading = MAX_HEADING.read(p);
+        maxTurn = MAX_TURN.read(p);
+        biasTime = BIAS_TIME.read(p);
+        calibrate = CALIBRATE.read(p);
     }
 
     @Override

@@ -4,6 +4,7 @@ import org.fdnet.event.ValueType;
 import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.runtime.Data;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Value;
 
 /**
@@ -12,6 +13,10 @@ import org.fdnet.runtime.Value;
  * standing pose; a value of another length is refused.
  */
 public class JointTargets extends Data {
+    /** The targets always start at the standing pose, whatever a file gives. */
+    public static final ParameterSpec<String> INITIAL = Data.INITIAL.defaultDescribed("the standing pose's angles")
+            .describe("not read: the targets start at the standing pose");
+
     @Override
     public ValueType type() {
         return ValueType.DOUBLES;

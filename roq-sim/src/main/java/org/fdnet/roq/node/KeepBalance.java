@@ -10,6 +10,7 @@ import static org.fdnet.roq.sim.RoqGeometry.TOTAL_MASS;
 
 import java.util.Locale;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -73,25 +74,24 @@ public class KeepBalance extends Relation {
     private double meanRoll = Double.NaN;
     private double meanPitch;
 
+    public static final ParameterSpec<Double> TAU = ParameterSpec.number("tau").unit("s").above(0).defaultValue(0.25)
+            .describe("the time constant the body is shifted over the support with").live();
+    public static final ParameterSpec<Double> MARGIN = ParameterSpec.number("margin").unit("m").defaultValue(0.05)
+            .describe("the stability margin below which the report says so").live();
+    public static final ParameterSpec<Double> PRESS = ParameterSpec.number("press").unit("N").range(0, Math.round(WEIGHT / 2))
+            .defaultValue(0.0).describe("the force a probing foot presses with, leant towards (0: no leaning)").live();
+    public static final ParameterSpec<Double> LEVEL = ParameterSpec.number("level").unit("s").above(0).defaultValue(2.0)
+            .describe("the time the slope RoQ stands on is averaged over").live();
+    public static final ParameterSpec<Double> TIP = ParameterSpec.number("tip").unit("m/rad").range(0, 2).defaultValue(0.3)
+            .describe("the shift up the tilt per radian of tip").live();
+
     @Override
     protected void init(NodeParameters p) {
-        tau = p.doubleValue("tau", 0.25);
-        margin = p.doubleValue("margin", 0.05);
-        if (tau <= 0) {
-            throw p.invalid("tau", "must be more than 0 s, was " + tau);
-        }
-        press = p.doubleValue("press", 0);
-        if (press < 0 || press > WEIGHT / 2) {
-            throw p.invalid("press", "must lie between 0 and " + Math.round(WEIGHT / 2) + " N, was " + press);
-        }
-        level = p.doubleValue("level", 2);
-        tip = p.doubleValue("tip", 0.3);
-        if (level <= 0) {
-            throw p.invalid("level", "must be more than 0 s, was " + level);
-        }
-        if (tip < 0 || tip > 2) {
-            throw p.invalid("tip", "must lie between 0 and 2 m per rad, was " + tip);
-        }
+        tau = TAU.read(p);
+        margin = MARGIN.read(p);
+        press = PRESS.read(p);
+        level = LEVEL.read(p);
+        tip = TIP.read(p);
     }
 
     @Override

@@ -3,6 +3,7 @@ package org.fdnet.roq.node;
 import static org.fdnet.roq.sim.RoqGeometry.LEGS;
 
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -32,20 +33,18 @@ public class LevelBody extends Relation {
     private double pitch;
     private double lastSeconds = Double.NaN;
 
+    public static final ParameterSpec<Double> TAU = ParameterSpec.number("tau").unit("s").range(0.1, 30).defaultValue(1.5)
+            .describe("the time constant of the levelling integrators").live();
+    public static final ParameterSpec<Double> MAX_ANGLE = ParameterSpec.number("maxAngle").unit("rad").range(0, 0.6)
+            .defaultValue(0.3).describe("the largest angle levelled").live();
+    public static final ParameterSpec<Double> REACH = ParameterSpec.number("reach").unit("m").range(0, 0.15)
+            .defaultValue(0.09).describe("the most any foot moves").live();
+
     @Override
     protected void init(NodeParameters p) {
-        tau = p.doubleValue("tau", 1.5);
-        maxAngle = p.doubleValue("maxAngle", 0.3);
-        reach = p.doubleValue("reach", 0.09);
-        if (!(tau >= 0.1) || tau > 30) {
-            throw p.invalid("tau", "must lie between 0.1 and 30 s, was " + tau);
-        }
-        if (!(maxAngle >= 0) || maxAngle > 0.6) {
-            throw p.invalid("maxAngle", "must lie between 0 and 0.6 rad, was " + maxAngle);
-        }
-        if (!(reach >= 0) || reach > 0.15) {
-            throw p.invalid("reach", "must lie between 0 and 0.15 m, was " + reach);
-        }
+        tau = TAU.read(p);
+        maxAngle = MAX_ANGLE.read(p);
+        reach = REACH.read(p);
     }
 
     @Override

@@ -4,6 +4,7 @@ import static org.fdnet.roq.sim.RoqGeometry.LEGS;
 
 import java.util.Locale;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -66,28 +67,24 @@ public class ProbeGround extends Relation {
     /** The leg whose foothold gave way at this touchdown, until it is accepted elsewhere or the gait steps on. */
     private int gaveWay = -1;
 
+    public static final ParameterSpec<Double> TEST_FORCE = ParameterSpec.number("testForce").unit("N").above(0)
+            .defaultValue(55.0).describe("the sole force a foothold must bear").live();
+    public static final ParameterSpec<Double> HOLD = ParameterSpec.number("hold").unit("s").above(0).atMost(2)
+            .defaultValue(0.25).describe("how long a foothold must bear the test force").live();
+    public static final ParameterSpec<Double> PRESS_SPEED = ParameterSpec.number("pressSpeed").unit("m/s").above(0)
+            .atMost(1).defaultValue(0.1).describe("how fast the foot is lowered").live();
+    public static final ParameterSpec<Double> MAX_PRESS = ParameterSpec.number("maxPress").unit("m").above(0).atMost(0.2)
+            .defaultValue(0.08).describe("how far the foot goes down looking for ground").live();
+    public static final ParameterSpec<Double> SINK = ParameterSpec.number("sink").unit("m").above(0).atMost(0.1)
+            .defaultValue(0.02).describe("how far the foot may sink after bearing the test force before the ground counts as broken").live();
+
     @Override
     protected void init(NodeParameters p) {
-        testForce = p.doubleValue("testForce", 55);
-        hold = p.doubleValue("hold", 0.25);
-        pressSpeed = p.doubleValue("pressSpeed", 0.1);
-        maxPress = p.doubleValue("maxPress", 0.08);
-        sink = p.doubleValue("sink", 0.02);
-        if (!(sink > 0) || sink > 0.1) {
-            throw p.invalid("sink", "must lie between 0 and 0.1 m, was " + sink);
-        }
-        if (!(testForce > 0)) {
-            throw p.invalid("testForce", "must be more than 0 N, was " + testForce);
-        }
-        if (!(hold > 0) || hold > 2) {
-            throw p.invalid("hold", "must lie between 0 and 2 s, was " + hold);
-        }
-        if (!(pressSpeed > 0) || pressSpeed > 1) {
-            throw p.invalid("pressSpeed", "must lie between 0 and 1 m/s, was " + pressSpeed);
-        }
-        if (!(maxPress > 0) || maxPress > 0.2) {
-            throw p.invalid("maxPress", "must lie between 0 and 0.2 m, was " + maxPress);
-        }
+        testForce = TEST_FORCE.read(p);
+        hold = HOLD.read(p);
+        pressSpeed = PRESS_SPEED.read(p);
+        maxPress = MAX_PRESS.read(p);
+        sink = SINK.read(p);
     }
 
     /** Footholds accepted so far. */

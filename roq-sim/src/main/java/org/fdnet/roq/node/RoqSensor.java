@@ -1,10 +1,9 @@
 package org.fdnet.roq.node;
 
-import java.util.Arrays;
-import java.util.Locale;
 import org.fdnet.event.ValueType;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.SensorData;
 import org.fdnet.runtime.Value;
 
@@ -26,20 +25,15 @@ public class RoqSensor extends SensorData {
         return ValueType.DOUBLES;
     }
 
+    public static final ParameterSpec<SensorChannel> CHANNEL = ParameterSpec.choice("channel", SensorChannel.class)
+            .describe("which of RoQ's sensors this Data holds");
+    public static final ParameterSpec<Long> EVERY = ParameterSpec.whole("every").unit("snapshots").atLeast(1)
+            .defaultValue(1L).describe("feed one simulator snapshot in this many");
+
     @Override
     protected void init(NodeParameters p) {
-        String name = p.requireString("channel").strip();
-        try {
-            channel = SensorChannel.valueOf(name.toUpperCase(Locale.ROOT));
-        } catch (IllegalArgumentException e) {
-            throw p.invalid("channel", "must be one of " + Arrays.toString(SensorChannel.values()).toLowerCase(Locale.ROOT)
-                    + ", was '" + name + "'");
-        }
-        long e = p.longValue("every", 1);
-        if (e < 1) {
-            throw p.invalid("every", "must be at least 1 (feed one snapshot in that many), was " + e);
-        }
-        every = (int) e;
+        channel = CHANNEL.read(p);
+        every = EVERY.read(p).intValue();
         buffer = new double[channel.length()];
     }
 

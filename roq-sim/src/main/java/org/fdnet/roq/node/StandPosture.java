@@ -3,6 +3,7 @@ package org.fdnet.roq.node;
 import static org.fdnet.roq.sim.RoqGeometry.*;
 
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -19,17 +20,16 @@ public class StandPosture extends Relation {
     private double ramp;
     private double startHeight;
 
+    public static final ParameterSpec<Double> HEIGHT = ParameterSpec.number("height").unit("m").range(0.10, 0.55)
+            .defaultDescribed("the standing pose's height").describe("the body's height above the ground").live();
+    public static final ParameterSpec<Double> RAMP = ParameterSpec.number("ramp").unit("s").atLeast(0).defaultValue(1.0)
+            .describe("the time it takes from the standing pose's height to height").live();
+
     @Override
     protected void init(NodeParameters p) {
         startHeight = standingHeight();
-        height = p.doubleValue("height", startHeight);
-        if (height < 0.10 || height > 0.55) {
-            throw p.invalid("height", "must lie between 0.10 and 0.55 m (what the legs reach), was " + height);
-        }
-        ramp = p.doubleValue("ramp", 1.0);
-        if (ramp < 0) {
-            throw p.invalid("ramp", "must be 0 s or more, was " + ramp);
-        }
+        height = HEIGHT.readOr(p, startHeight);
+        ramp = RAMP.read(p);
         double[] foot = new double[3];
         for (int leg = 0; leg < LEGS; leg++) {
             footInBody(leg, STANDING_POSE[0], STANDING_POSE[1], STANDING_POSE[2], foot);

@@ -3,6 +3,7 @@ package org.fdnet.roq.node;
 import static org.fdnet.roq.sim.RoqGeometry.LEGS;
 
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -81,47 +82,39 @@ public class TiltReflex extends Relation {
     private boolean written;
     private final StringBuilder report = new StringBuilder(32);
 
+    /** Event-driven: a period would only delay the reflex. */
+    public static final ParameterSpec<Long> PERIOD = Relation.PERIOD.range(0, 0)
+            .describe("none: the tilt reflex fires on its inputs; a period would only delay it");
+    public static final ParameterSpec<Double> TILT = ParameterSpec.number("tilt").unit("rad").above(0).below(1)
+            .defaultValue(0.15).describe("the roll or pitch that triggers it").live();
+    public static final ParameterSpec<Double> RATE = ParameterSpec.number("rate").unit("rad/s").above(0).below(20)
+            .defaultValue(1.0).describe("the roll or pitch rate that triggers it").live();
+    public static final ParameterSpec<Double> HOLD = ParameterSpec.number("hold").unit("s").range(0, 5).defaultValue(0.3)
+            .describe("how long it holds after the last reading that triggered it").live();
+    public static final ParameterSpec<Double> PRESS = ParameterSpec.number("press").unit("m").range(0, 0.05)
+            .defaultValue(0.01).describe("how far below the feet on the ground the swinging foot goes down").live();
+    public static final ParameterSpec<Double> STEP = ParameterSpec.number("step").unit("m").range(0, 0.2).defaultValue(0.0)
+            .describe("the catching step of the swinging foot along the way RoQ falls").live();
+    public static final ParameterSpec<Double> SHIFT = ParameterSpec.number("shift").unit("m").range(0, 0.15)
+            .defaultValue(0.0).describe("how far the feet on the ground move along the way RoQ falls").live();
+    public static final ParameterSpec<Double> CROUCH = ParameterSpec.number("crouch").unit("m").range(0, MOST_CROUCH)
+            .defaultValue(0.0).describe("how far every foot rises, so the body sinks").live();
+    public static final ParameterSpec<Double> RELEASE = ParameterSpec.number("release").unit("s").range(0, 5)
+            .defaultValue(0.0).describe("the time the shift and crouch fade out over after the hold").live();
+    public static final ParameterSpec<Double> UNLEAN = ParameterSpec.number("unlean").range(0, 1).defaultValue(0.0)
+            .describe("the share of Balance's lean taken back once the caught foot is down").live();
+
     @Override
     protected void init(NodeParameters p) {
-        tilt = p.doubleValue("tilt", 0.15);
-        rate = p.doubleValue("rate", 1.0);
-        hold = p.doubleValue("hold", 0.3);
-        press = p.doubleValue("press", 0.01);
-        step = p.doubleValue("step", 0);
-        shift = p.doubleValue("shift", 0);
-        crouch = p.doubleValue("crouch", 0);
-        release = p.doubleValue("release", 0);
-        unlean = p.doubleValue("unlean", 0);
-        if (!(tilt > 0 && tilt < 1)) {
-            throw p.invalid("tilt", "must lie between 0 and 1 rad, was " + tilt);
-        }
-        if (!(rate > 0 && rate < 20)) {
-            throw p.invalid("rate", "must lie between 0 and 20 rad/s, was " + rate);
-        }
-        if (!(hold >= 0 && hold <= 5)) {
-            throw p.invalid("hold", "must lie between 0 and 5 s, was " + hold);
-        }
-        if (!(press >= 0 && press <= 0.05)) {
-            throw p.invalid("press", "must lie between 0 and 0.05 m, was " + press);
-        }
-        if (!(step >= 0 && step <= 0.2)) {
-            throw p.invalid("step", "must lie between 0 and 0.2 m, was " + step);
-        }
-        if (!(shift >= 0 && shift <= 0.15)) {
-            throw p.invalid("shift", "must lie between 0 and 0.15 m, was " + shift);
-        }
-        if (!(crouch >= 0 && crouch <= MOST_CROUCH)) {
-            throw p.invalid("crouch", "must lie between 0 and " + MOST_CROUCH + " m, was " + crouch);
-        }
-        if (!(release >= 0 && release <= 5)) {
-            throw p.invalid("release", "must lie between 0 and 5 s, was " + release);
-        }
-        if (!(unlean >= 0 && unlean <= 1)) {
-            throw p.invalid("unlean", "must lie between 0 and 1 (the share of Balance's lean taken back), was " + unlean);
-        }
-        if (p.has("period")) {
-            throw p.invalid("period", "the tilt reflex fires on its inputs; a period would only delay it");
-        }
+        tilt = TILT.read(p);
+        rate = RATE.read(p);
+        hold = HOLD.read(p);
+        press = PRESS.read(p);
+        step = STEP.read(p);
+        shift = SHIFT.read(p);
+        crouch = CROUCH.read(p);
+        release = RELEASE.read(p);
+        unlean = UNLEAN.read(p);
     }
 
     @Override

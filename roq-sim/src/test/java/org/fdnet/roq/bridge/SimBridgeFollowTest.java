@@ -2,6 +2,7 @@ package org.fdnet.roq.bridge;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.fdnet.netinfo.ConnectionInfo;
@@ -29,11 +30,12 @@ import org.junit.jupiter.api.Timeout;
  */
 @Timeout(120)
 class SimBridgeFollowTest {
+    private static final Path NETWORK = Path.of("..", "networks", "roq-reflex-bench.fdn");
     private static final NodeRef TARGETS = NodeRef.parse("joint targets", "main");
     private static final NodeRef IK = NodeRef.parse("inverse kinematics", "Legs");
 
     private static RuntimeNetwork start() throws Exception {
-        return RuntimeNetwork.start(NetworkRepository.load(TiltReflexTest.NETWORK),
+        return RuntimeNetwork.start(NetworkRepository.load(NETWORK),
                 RuntimeOptions.defaults().drivenClock(new DrivenClock(0)));
     }
 
@@ -81,7 +83,7 @@ class SimBridgeFollowTest {
     @Test
     void shouldSendEveryChangedValueInRealTimeDroppingNoneInBetween() throws Exception {
         try (RoqSimulator sim = RoqSimulator.open(Course.flat(), SimMode.REAL_TIME);
-             RuntimeNetwork net = RuntimeNetwork.start(NetworkRepository.load(TiltReflexTest.NETWORK),
+             RuntimeNetwork net = RuntimeNetwork.start(NetworkRepository.load(NETWORK),
                      RuntimeOptions.defaults())) {
             java.util.concurrent.atomic.AtomicLong changes = new java.util.concurrent.atomic.AtomicLong();
             Value[] last = new Value[1];

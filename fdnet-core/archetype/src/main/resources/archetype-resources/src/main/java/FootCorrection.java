@@ -3,6 +3,7 @@ package ${package};
 import org.fdnet.event.ValueType;
 import org.fdnet.runtime.Data;
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Value;
 
 /**
@@ -11,9 +12,12 @@ import org.fdnet.runtime.Value;
  * the Relation that wrote it fails (and the network runs on without its correction) instead of moving a foot too
  * far.
  *
- * <p>Parameter: {@code bound} (m, default 0.02, at most 0.05): the largest correction of any coordinate.
+ * <p>Parameter: {@code bound}, declared below.
  */
 public class FootCorrection extends Data {
+    public static final ParameterSpec<Double> BOUND = ParameterSpec.number("bound").unit("m").above(0).atMost(0.05)
+            .defaultValue(0.02).describe("the largest correction of any coordinate");
+
     /** Four legs, x, y and z each. */
     public static final int LENGTH = 12;
 
@@ -26,10 +30,7 @@ public class FootCorrection extends Data {
 
     @Override
     protected void init(NodeParameters parameters) {
-        bound = parameters.doubleValue("bound", 0.02);
-        if (!(bound > 0) || bound > 0.05) {
-            throw parameters.invalid("bound", "must lie in (0, 0.05] m, was " + bound);
-        }
+        bound = BOUND.read(parameters);
     }
 
     /** No correction until a Relation writes one. */

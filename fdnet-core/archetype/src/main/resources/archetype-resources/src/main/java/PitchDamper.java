@@ -1,6 +1,7 @@
 package ${package};
 
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
@@ -13,9 +14,15 @@ import org.fdnet.runtime.Value;
  *
  * <p>Inputs (by name): {@code attitude} (roll, pitch in rad; pitch &gt; 0 is nose down) and {@code gait feet} (12,
  * the gait's feet in the body frame). Output 0: the correction to add to the feet (12 numbers; only z is non-zero).
- * Parameters: {@code gain} (default 0.5, between 0 and 2) and {@code limit} (m, default 0.01, between 0 and 0.03).
+ * Its parameters are declared below: the engine checks them before {@code init}, {@code fdnet info --params} and the
+ * editor list them, and a running network changes only those declared {@code live()}.
  */
 public class PitchDamper extends Relation {
+    public static final ParameterSpec<Double> GAIN = ParameterSpec.number("gain").unit("m/(m rad)").range(0, 2)
+            .defaultValue(0.5).describe("how much a foot moves per metre ahead of the centre and radian of pitch").live();
+    public static final ParameterSpec<Double> LIMIT = ParameterSpec.number("limit").unit("m").range(0, 0.03)
+            .defaultValue(0.01).describe("the most any foot's height moves").live();
+
     private static final int LEGS = 4;
 
     private final double[] correction = new double[3 * LEGS];
@@ -24,14 +31,8 @@ public class PitchDamper extends Relation {
 
     @Override
     protected void init(NodeParameters parameters) {
-        gain = parameters.doubleValue("gain", 0.5);
-        limit = parameters.doubleValue("limit", 0.01);
-        if (!(gain >= 0) || gain > 2) {
-            throw parameters.invalid("gain", "must lie between 0 and 2, was " + gain);
-        }
-        if (!(limit >= 0) || limit > 0.03) {
-            throw parameters.invalid("limit", "must lie between 0 and 0.03 m, was " + limit);
-        }
+        gain = GAIN.read(parameters);
+        limit = LIMIT.read(parameters);
     }
 
     @Override

@@ -74,7 +74,8 @@ class ReportPlanTest {
         assertThat(read("rt", "rt: joint loop")).containsExactly(57, 39);
         assertThat(read("rt", "rt: loop overruns")[0]).isZero();
         assertThat(read("sim", "sim: tick")).containsExactly(17.2, 16.8);
-        assertThat(read("roq-ab", "roq (a)")).containsExactly(8.4, 5.4);
+        assertThat(read("roq-ab", "roq (a): stepped")).containsExactly(8.4, 5.4);
+        assertThat(read("roq-ab", "roq (a): a 40 s robot test")).containsExactly(19.2, 21.9);
         assertThat(read("roq-ab", "roq (b)")).containsExactly(1, 1);
         assertThat(read("roq-push", "roq push")[0]).isEqualTo(10.33);
         assertThat(read("roq-heading", "roq heading")).containsExactly(0.093, 0.090);

@@ -3,6 +3,7 @@ package org.fdnet.roq.bench;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -18,6 +19,9 @@ import org.fdnet.roq.sim.JointCommand;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
 import org.fdnet.roq.sim.SimMode;
+import org.fdnet.roq.sim.SimOptions;
+import org.fdnet.roq.testkit.CourseSpec;
+import org.fdnet.roq.testkit.SimulatedRoq;
 import org.fdnet.runtime.engine.DrivenClock;
 import org.fdnet.runtime.cli.ParameterAssignment;
 import org.fdnet.runtime.engine.RuntimeNetwork;
@@ -30,7 +34,10 @@ import picocli.CommandLine.Option;
  * <ol type="a">
  *   <li>Stepped speed of a RoQ network driving the simulator through the {@link SimBridge} (one network advance
  *   per 1 ms tick) beside the plant alone stepped the same way (a snapshot read and a command each tick, no
- *   network), in the same run, alternating second by second so the machine's load falls on both alike.</li>
+ *   network), in the same run, alternating second by second so the machine's load falls on both alike. Before that, a
+ *   robot test as a user writes it ({@link SimulatedRoq}: {@code --network} on {@code --test-course} with sensor
+ *   noise, {@code --test-seconds} of simulated time, started, run, measured and closed) as a multiple of real time,
+ *   beside the plant alone stepped through the same simulated time on the same course with the same options.</li>
  *   <li>{@link ReflexLatencyBench Reflex latency} in real time from stimuli (pushes), snapshot to applied command,
  *   for the tilt reflex and for the periodic path, the network recording with a logger, beside a bare Java echo of
  *   each snapshot's tick into the command slot.</li>
@@ -39,7 +46,8 @@ import picocli.CommandLine.Option;
  * {@code --part breakthroughs}: {@link BreakthroughSweep}.
  */
 @Command(name = "roq", mixinStandardHelpOptions = true,
-        description = "(a) stepped speed of a RoQ network + simulator beside the simulator alone; (b) real-time reflex"
+        description = "(a) stepped speed of a RoQ network + simulator beside the simulator alone, and a robot test on"
+                + " the test kit (SimulatedRoq) as a multiple of real time beside the plant alone; (b) real-time reflex"
                 + " latency from pushes, stimulus snapshot to applied command, tilt reflex and periodic path, beside a"
                 + " bare Java echo (same run); push: largest survivable push with the full network beside Balance and"
                 + " Reflex unloaded; heading: drift off the course line with and without module Course; breakthroughs:"
@@ -48,6 +56,15 @@ public final class BenchRoqCommand implements Callable<Integer> {
     @Option(names = "--seconds", defaultValue = "60",
             description = "(a) simulated seconds for each measurement (default 60)")
     int seconds;
+
+    @Option(names = "--test-course", defaultValue = "rubble:12",
+            description = "(a) the robot test's course: a built-in name, rubble:SEED, slope:DEGREES or a .course file"
+                    + " (default rubble:12)")
+    String testCourse;
+
+    @Option(names = "--test-seconds", defaultValue = "40",
+            description = "(a) the robot test's simulated seconds (default 40; target: at least 10× real time)")
+    int testSeconds;
 
     @Option(names = "--pushes", defaultValue = "100",
             description = "(b) pushes answered, reflex loaded and again unloaded (default 100; at most 4 wall s each)")
@@ -110,6 +127,9 @@ public final class BenchRoqCommand implements Callable<Integer> {
                     + " unloads Probing as well)")
     List<String> unload = new ArrayList<>();
 
+    /** The robot test's sensor-noise seed (the kit's default). */
+    static final long TEST_NOISE = 1;
+
     /** The heading runs' default noise seeds: RoqCoursesTest's eight. */
     static final String HEADING_NOISE = "5,105,205,305,405,505,605,705";
 
@@ -134,6 +154,10 @@ public final class BenchRoqCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         if (seconds < 1) {
             System.err.println("fdnet bench roq: --seconds must be at least 1, was " + seconds);
+            return 2;
+        }
+        if (testSeconds < 1) {
+            System.err.println("fdnet bench roq: --test-seconds must be at least 1, was " + testSeconds);
             return 2;
         }
         if (drops < 1) {
@@ -217,6 +241,8 @@ public final class BenchRoqCommand implements Callable<Integer> {
                 return 0;
             }
             if (part.contains("a")) {
+                Course tested = CourseSpec.parse(testCourse);
+                robotTest(tested);
                 stepped(CourseLoader.resolve(course), load(network));
             }
             if (part.contains("b")) {
@@ -229,6 +255,9 @@ public final class BenchRoqCommand implements Callable<Integer> {
             return 2;
         } catch (NoSuchFileException e) {
             System.err.println("fdnet bench roq: no network file " + e.getFile());
+            return 2;
+        } catch (IllegalArgumentException e) {
+            System.err.println("fdnet bench roq: " + e.getMessage());
             return 2;
         }
     }
@@ -292,6 +321,51 @@ public final class BenchRoqCommand implements Callable<Integer> {
         double ratio = withNet / plant;
         System.out.printf(Locale.ROOT, "network + plant: %.2f× the plant alone (target ≥ 0.8: %s)%n",
                 ratio, ratio >= 0.8 ? "met" : "NOT met");
+    }
+
+    /**
+     * A robot test as a user's runs: {@code --network} on {@code --test-course}, noise seed {@value #TEST_NOISE}, for
+     * {@code --test-seconds}, from start to close, timed whole, twice: as a suite's first test (the JVM loads and
+     * compiles the classes on the way) and as a later one (the same test again: the target's figure); beside the
+     * plant alone, opened, stepped through as many ticks on the same course with the kit's simulator options and
+     * closed, in the same run. It runs before the stepped-bridge measurement, so the JVM has seen only the kit's path.
+     */
+    private void robotTest(Course c) {
+        System.out.printf(Locale.ROOT, "robot test on the kit: %s on %s, noise %d, %d simulated s (SimulatedRoq: start,"
+                + " run, measure, close), twice%n", network, testCourse, TEST_NOISE, testSeconds);
+        long t = System.nanoTime();
+        runTest(c, testSeconds);
+        long firstNanos = System.nanoTime() - t;
+        long t0 = System.nanoTime();
+        String measured = runTest(c, testSeconds);
+        long testNanos = System.nanoTime() - t0;
+        long t1 = System.nanoTime();
+        try (RoqSimulator alone = RoqSimulator.open(c, SimOptions.of(SimMode.STEPPED).withNoise(TEST_NOISE)
+                .withRangeSensors(false))) {
+            SensorSnapshot s = new SensorSnapshot();
+            JointCommand command = new JointCommand();
+            for (int second = 0; second < testSeconds; second++) {
+                plantAlone(alone, s, command);
+            }
+        }
+        long plantNanos = System.nanoTime() - t1;
+        double test = testSeconds / (testNanos / 1e9);
+        double plant = testSeconds / (plantNanos / 1e9);
+        System.out.println("  " + measured);
+        System.out.printf(Locale.ROOT, "baseline: plant alone, same course   %6.1f× real time (%.2f wall s)%n", plant,
+                plantNanos / 1e9);
+        System.out.printf(Locale.ROOT, "robot test, first in this JVM        %6.1f× real time (%.2f wall s; classes"
+                + " loaded and compiled on the way)%n", testSeconds / (firstNanos / 1e9), firstNanos / 1e9);
+        System.out.printf(Locale.ROOT, "robot test (SimulatedRoq)            %6.1f× real time (%.2f wall s, the same test"
+                + " again; target ≥ 10×: %s)%n", test, testNanos / 1e9, test >= 10 ? "met" : "NOT met");
+    }
+
+    /** One robot test: {@code --network} on {@code c} for {@code seconds}, started, run and closed; its measures. */
+    private String runTest(Course c, int seconds) {
+        try (SimulatedRoq roq = SimulatedRoq.builder().network(network).course(c).noise(TEST_NOISE).start()) {
+            roq.runFor(Duration.ofSeconds(seconds));
+            return roq.measures().toString();
+        }
     }
 
     /** 1000 ticks as the bridge steps them, without a network: step, read, send. Returns nanoseconds. */

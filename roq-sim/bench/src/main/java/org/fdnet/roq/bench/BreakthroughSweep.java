@@ -10,12 +10,12 @@ import java.util.concurrent.Future;
 import java.util.stream.Stream;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.roq.bridge.BreakthroughCauses;
-import org.fdnet.roq.bridge.CourseRun;
 import org.fdnet.roq.sim.Course;
+import org.fdnet.roq.testkit.RoqMeasures;
 
 /**
  * {@code fdnet bench roq --part breakthroughs}: a course walked on many sensor-noise seeds, stepped, and how many
- * fragile cells broke under a loaded foot ({@link CourseRun#loadedBreakthroughs()}) against under a probe, how far
+ * fragile cells broke under a loaded foot ({@link RoqMeasures#loadedBreakthroughs()}) against under a probe, how far
  * RoQ walked, how far it strayed and whether it fell. One run says little — on {@code crossing} the count moves by
  * 0–3 from one noise seed to the next — so it is the sum over the seeds that compares. Baseline, over the same seeds:
  * the network with module Probing unloaded (every crust stepped on then breaks under a loaded foot). At most two runs
@@ -42,7 +42,7 @@ final class BreakthroughSweep {
     /** Sums of one variant's runs. */
     record Sum(int runs, int loaded, int probeBroken, int withNone, int fallen, double walked, double leastWalked,
                double track, double heading, int swinging, int standing, int slid) {
-        static Sum of(List<CourseRun> runs) {
+        static Sum of(List<MeasuredWalk> walks) {
             int swinging = 0;
             int standing = 0;
             int slid = 0;
@@ -54,7 +54,8 @@ final class BreakthroughSweep {
             double least = Double.POSITIVE_INFINITY;
             double track = 0;
             double heading = 0;
-            for (CourseRun r : runs) {
+            for (MeasuredWalk w : walks) {
+                RoqMeasures r = w.measures();
                 loaded += r.loadedBreakthroughs();
                 swinging += r.underSwingingFoot();
                 standing += r.underStandingFoot();
@@ -67,7 +68,7 @@ final class BreakthroughSweep {
                 track = Math.max(track, r.trackError());
                 heading = Math.max(heading, r.headingError());
             }
-            return new Sum(runs.size(), loaded, probe, none, fallen, walked / runs.size(), least, track, heading,
+            return new Sum(walks.size(), loaded, probe, none, fallen, walked / walks.size(), least, track, heading,
                     swinging, standing, slid);
         }
 
@@ -90,18 +91,19 @@ final class BreakthroughSweep {
         String[] withoutProbing = Stream.concat(Arrays.stream(unloaded), Stream.of("Probing")).distinct()
                 .toArray(String[]::new);
         ExecutorService pool = Executors.newFixedThreadPool(2);
-        List<Future<CourseRun>> probed = new ArrayList<>();
-        List<Future<CourseRun>> unprobed = new ArrayList<>();
+        List<Future<MeasuredWalk>> probed = new ArrayList<>();
+        List<Future<MeasuredWalk>> unprobed = new ArrayList<>();
         try {
             for (long noise : noises) {
-                probed.add(pool.submit(() -> CourseRun.of("noise " + noise, network, course, seconds, noise, unloaded)));
+                probed.add(pool.submit(() -> MeasuredWalk.of("noise " + noise, network, course, seconds, noise,
+                        unloaded)));
             }
             for (long noise : noises) {
-                unprobed.add(pool.submit(() -> CourseRun.of("noise " + noise + ", Probing unloaded", network, course,
+                unprobed.add(pool.submit(() -> MeasuredWalk.of("noise " + noise + ", Probing unloaded", network, course,
                         seconds, noise, withoutProbing)));
             }
-            List<CourseRun> with = collect(probed);
-            List<CourseRun> without = collect(unprobed);
+            List<MeasuredWalk> with = collect(probed);
+            List<MeasuredWalk> without = collect(unprobed);
             Sum sum = Sum.of(with);
             System.out.println(sum.line("with the network as it is"));
             baseline = Sum.of(without);
@@ -117,10 +119,10 @@ final class BreakthroughSweep {
         return baseline;
     }
 
-    private static List<CourseRun> collect(List<Future<CourseRun>> futures) throws Exception {
-        List<CourseRun> runs = new ArrayList<>();
-        for (Future<CourseRun> f : futures) {
-            CourseRun r = f.get();
+    private static List<MeasuredWalk> collect(List<Future<MeasuredWalk>> futures) throws Exception {
+        List<MeasuredWalk> runs = new ArrayList<>();
+        for (Future<MeasuredWalk> f : futures) {
+            MeasuredWalk r = f.get();
             System.out.println("  " + r);
             runs.add(r);
         }

@@ -8,10 +8,11 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.roq.bridge.CourseMeter;
-import org.fdnet.roq.bridge.CourseRun;
+import org.fdnet.roq.testkit.CourseSpec;
+import org.fdnet.roq.testkit.RoqMeasures;
 
 /**
- * {@code fdnet bench roq --part heading}: on a few 6 cm rubble courses ({@link CourseRun#rubble}), how far RoQ strays
+ * {@code fdnet bench roq --part heading}: on a few 6 cm rubble courses ({@link CourseSpec#rubble}), how far RoQ strays
  * off its course line and heading over ~3 m of walking with module Course loaded beside unloaded, on several sensor-
  * noise seeds. One run tells little — over eight noise seeds of one course the drift without Course ranged 0.18–0.91
  * m, and run by run Course did worse than none on two of them — so each course's line is the mean over the noise seeds, and
@@ -37,15 +38,15 @@ final class HeadingDriftBench {
                         + " baseline: module Course unloaded%n", network.name(), seconds, noises.length,
                 CourseMeter.WINDOW / 100.0);
         ExecutorService pool = Executors.newFixedThreadPool(2);
-        List<Future<CourseRun>> held = new ArrayList<>();
-        List<Future<CourseRun>> unheld = new ArrayList<>();
+        List<Future<MeasuredWalk>> held = new ArrayList<>();
+        List<Future<MeasuredWalk>> unheld = new ArrayList<>();
         try {
             for (long seed : seeds) {
                 for (long noise : noises) {
-                    held.add(pool.submit(() -> CourseRun.of("rubble " + seed + ", noise " + noise + ", with Course",
-                            network, CourseRun.rubble(seed), seconds, noise)));
-                    unheld.add(pool.submit(() -> CourseRun.of("rubble " + seed + ", noise " + noise
-                            + ", without Course", network, CourseRun.rubble(seed), seconds, noise, "Course")));
+                    held.add(pool.submit(() -> MeasuredWalk.of("rubble " + seed + ", noise " + noise + ", with Course",
+                            network, CourseSpec.rubble(seed), seconds, noise)));
+                    unheld.add(pool.submit(() -> MeasuredWalk.of("rubble " + seed + ", noise " + noise
+                            + ", without Course", network, CourseSpec.rubble(seed), seconds, noise, "Course")));
                 }
             }
             System.out.println("rubble seed  mean walked with / without  mean off the line with / without (ratio,"
@@ -58,9 +59,11 @@ final class HeadingDriftBench {
                 int fellWith = 0;
                 int fellWithout = 0;
                 for (int n = 0; n < noises.length; n++) {
-                    CourseRun w = held.get(k * noises.length + n).get();
-                    CourseRun wo = unheld.get(k * noises.length + n).get();
-                    System.out.println("  " + w + "\n  " + wo);
+                    MeasuredWalk heldWalk = held.get(k * noises.length + n).get();
+                    MeasuredWalk unheldWalk = unheld.get(k * noises.length + n).get();
+                    System.out.println("  " + heldWalk + "\n  " + unheldWalk);
+                    RoqMeasures w = heldWalk.measures();
+                    RoqMeasures wo = unheldWalk.measures();
                     add(with, w);
                     add(without, wo);
                     worse += w.trackError() > wo.trackError() ? 1 : 0;
@@ -82,7 +85,7 @@ final class HeadingDriftBench {
         }
     }
 
-    private static void add(double[] sums, CourseRun r) {
+    private static void add(double[] sums, RoqMeasures r) {
         sums[0] += r.distance();
         sums[1] += r.trackError();
         sums[2] += r.headingError();

@@ -1,19 +1,16 @@
 package org.fdnet.roq.bench;
 
+import java.time.Duration;
 import org.fdnet.netinfo.NetworkInfo;
-import org.fdnet.netinfo.NodeRef;
-import org.fdnet.roq.bridge.CourseRun;
-import org.fdnet.roq.bridge.SimBridge;
 import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.Push;
-import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
+import org.fdnet.roq.testkit.SimulatedRoq;
 import org.fdnet.runtime.Value;
-import org.fdnet.runtime.engine.RuntimeNetwork;
 
 /**
- * One stepped, deterministic push trial: RoQ walks {@code network} (with some modules unloaded) on a course with
- * seeded sensor noise; at the first leg lift after {@link #WARM_UP} s, plus {@code offset} s into the swing, the body
+ * One stepped, deterministic push trial on a {@link SimulatedRoq}: RoQ walks {@code network} (with some modules
+ * unloaded) on a course with seeded sensor noise; at the first leg lift after {@link #WARM_UP} s, plus {@code offset} s into the swing, the body
  * is pushed with {@code force} N for {@link #DURATION} s along {@code direction}; then it walks {@link #SETTLE} s
  * more. It survived when FallDetector's latch ({@code fallen}) stayed false and the sensed tilt stayed under
  * {@link #TILT_LIMIT} rad, FallDetector's limit in the RoQ networks.
@@ -27,6 +24,10 @@ final class PushTrial {
     static final double DURATION = 0.2;
     /** Tilt at which RoQ counts as fallen, rad (FallDetector's limit in the RoQ networks). */
     static final double TILT_LIMIT = 0.6;
+    /** The lift is looked for tick by tick, so the push starts where the bench says. */
+    private static final Duration TICK = Duration.ofMillis(1);
+    /** The tilt after the push is sampled every 10 ms. */
+    private static final Duration SAMPLE = Duration.ofMillis(10);
 
     private final NetworkInfo network;
     private final Course course;
@@ -53,20 +54,17 @@ final class PushTrial {
     }
 
     /** Runs one trial. */
-    Outcome run(double force, double direction, double offset) throws Exception {
-        try (RoqSimulator sim = RoqSimulator.open(course, CourseRun.steppedWithNoise(noise));
-             RuntimeNetwork net = CourseRun.startStepped(network, unloaded)) {
-            SimBridge bridge = SimBridge.stepped(net, sim, 0, 1);
-            NodeRef phase = NodeRef.parse("gait phase", "main");
+    Outcome run(double force, double direction, double offset) {
+        try (SimulatedRoq roq = SimulatedRoq.builder().network(network).course(course).noise(noise).unload(unloaded)
+                .start()) {
             boolean wasInAir = true;
             int leg = -1;
             double lift = -1;
             while (lift < 0) {
-                bridge.run(1);
-                SensorSnapshot s = bridge.lastSnapshot();
-                Value p = net.controller().value(phase);
+                roq.advance(TICK);
+                Value p = roq.network().value("gait phase");
                 boolean inAir = p != null && p.length() >= 2 && p.element(1) > 0;
-                double now = s.tick() / 1000.0;
+                double now = roq.snapshot().tick() / 1000.0;
                 if (inAir && !wasInAir && now >= WARM_UP) {
                     lift = now;
                     leg = (int) p.element(0);
@@ -77,15 +75,15 @@ final class PushTrial {
                 }
             }
             double start = lift + offset;
-            sim.stimulate(new Push(start, DURATION, force, direction));
+            roq.push(new Push(start, DURATION, force, direction));
             double tilt = 0;
             int ticks = (int) Math.round((offset + DURATION + SETTLE) * 1000);
             for (int t = 0; t < ticks; t += 10) {
-                bridge.run(10);
-                SensorSnapshot s = bridge.lastSnapshot();
+                roq.advance(SAMPLE);
+                SensorSnapshot s = roq.snapshot();
                 tilt = Math.max(tilt, Math.max(Math.abs(s.roll()), Math.abs(s.pitch())));
             }
-            Value fallen = net.controller().value(NodeRef.parse("fallen", "main"));
+            Value fallen = roq.network().value("fallen");
             boolean fell = fallen != null && fallen.asBoolean();
             return new Outcome(!fell && tilt < TILT_LIMIT, tilt, start, leg);
         }

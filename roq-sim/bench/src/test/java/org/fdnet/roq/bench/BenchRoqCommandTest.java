@@ -33,6 +33,18 @@ class BenchRoqCommandTest {
                 "fdnet bench roq: --unload applies to --part breakthroughs only, was given with --part heading");
     }
 
+    @Test
+    void shouldRefuseARobotTestCourseItCannotReadNamingIt() {
+        String err = refused("--part", "a", "--network", NETWORK, "--test-course", "rubble:twelve");
+        assertThat(err.strip()).startsWith("fdnet bench roq: course 'rubble:twelve': after 'rubble:' comes a seed");
+    }
+
+    @Test
+    void shouldRefuseARobotTestOfNoSimulatedTime() {
+        String err = refused("--part", "a", "--test-seconds", "0");
+        assertThat(err.strip()).isEqualTo("fdnet bench roq: --test-seconds must be at least 1, was 0");
+    }
+
     /** Runs the command with {@code args}, asserts it exits 2, and returns what it wrote to standard error. */
     private static String refused(String... args) {
         ByteArrayOutputStream captured = new ByteArrayOutputStream();

@@ -20,6 +20,9 @@ public @interface Roq {
     /** @return the sensor-noise seed */
     long noise() default 1;
 
+    /** @return false to turn sensor noise off (every sensor reads the plant exactly; {@link #noise()} is ignored) */
+    boolean sensorNoise() default true;
+
     /** @return modules to unload before the run starts */
     String[] unload() default {};
 }

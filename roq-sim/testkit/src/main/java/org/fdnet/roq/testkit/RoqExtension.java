@@ -28,8 +28,9 @@ public final class RoqExtension implements ParameterResolver, TestExecutionExcep
         Roq spec = parameter.findAnnotation(Roq.class).orElseThrow();
         SimulatedRoq roq;
         try {
-            roq = SimulatedRoq.builder().network(Path.of(spec.network())).course(spec.course()).noise(spec.noise())
-                    .unload(spec.unload()).start();
+            SimulatedRoq.Builder builder = SimulatedRoq.builder().network(Path.of(spec.network())).course(spec.course())
+                    .noise(spec.noise()).unload(spec.unload());
+            roq = (spec.sensorNoise() ? builder : builder.withoutNoise()).start();
         } catch (RuntimeException e) {
             throw new ParameterResolutionException("@Roq(network = \"" + spec.network() + "\", course = \""
                     + spec.course() + "\") of " + parameter.getDeclaringExecutable().getName() + ": " + e.getMessage(), e);

@@ -1,6 +1,9 @@
 package org.fdnet.roq.testkit;
 
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.HexFormat;
@@ -9,6 +12,11 @@ import java.util.Locale;
 import java.util.Objects;
 import java.util.function.Consumer;
 import java.util.function.Predicate;
+import org.fdnet.event.DataValueEvent;
+import org.fdnet.event.NetworkCommandEvent;
+import org.fdnet.event.NetworkEvent;
+import org.fdnet.event.NodeNamedEvent;
+import org.fdnet.event.RelationValueEvent;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
@@ -18,12 +26,13 @@ import org.fdnet.netinfo.xml.NetworkFileException;
 import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.roq.bridge.BreakthroughCauses;
 import org.fdnet.roq.bridge.CourseMeter;
-import org.fdnet.roq.bridge.CourseRun;
 import org.fdnet.roq.bridge.SimBridge;
 import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.sim.Push;
 import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
+import org.fdnet.roq.sim.SimMode;
+import org.fdnet.roq.sim.SimOptions;
 import org.fdnet.runtime.Value;
 import org.fdnet.runtime.loading.ClassLoadingPolicy;
 import org.fdnet.testkit.TestNetwork;
@@ -31,8 +40,8 @@ import org.fdnet.testkit.TestNetwork;
 /**
  * The simulated RoQ under a network, stepped on one thread: the MuJoCo plant advances 1 ms per tick and the network
  * runs on a driven clock in lockstep with it, so the same test gives the same robot, bit for bit
- * ({@link #stateHash()}), however loaded the machine is, and runs as fast as the CPU allows. Sensor noise is on,
- * from a seed.
+ * ({@link #stateHash()}) and the same network events ({@link #eventLogHash()}), however loaded the machine is, and
+ * runs as fast as the CPU allows. Sensor noise is on, from a seed, unless the builder turns it off.
  *
  * <p>A <em>step</em> is 10 ms of simulated time: hooks run before and after each, and the ground-truth measures
  * ({@link #measures()}) are sampled after each. Every event the network emits is kept, so a failing test can be
@@ -218,6 +227,43 @@ public final class SimulatedRoq implements AutoCloseable {
         return HexFormat.of().toHexDigits(simulator.stateHash());
     }
 
+    /**
+     * @return a hash of every event the network emitted so far (values, relation states, commands, node names), each
+     *         with its time counted from the start of the run, as hex: the same test run twice gives the same hash
+     *         although the driven clock starts at each run's wall-clock time
+     */
+    public String eventLogHash() {
+        MessageDigest sha = sha256();
+        long start = network.startMicros();
+        for (NetworkEvent e : network.events()) {
+            sha.update(relativeToStart(e, start).toString().getBytes(StandardCharsets.UTF_8));
+        }
+        return HexFormat.of().formatHex(sha.digest());
+    }
+
+    private static NetworkEvent relativeToStart(NetworkEvent e, long start) {
+        long t = e.time() - start;
+        if (e instanceof DataValueEvent d) {
+            return new DataValueEvent(d.sourceId(), t, d.value());
+        }
+        if (e instanceof RelationValueEvent r) {
+            return new RelationValueEvent(r.sourceId(), t, r.value());
+        }
+        if (e instanceof NetworkCommandEvent c) {
+            return new NetworkCommandEvent(c.sourceId(), t, c.sourceType(), c.command(), c.paramsId(), c.paramsType());
+        }
+        NodeNamedEvent n = (NodeNamedEvent) e;
+        return new NodeNamedEvent(n.sourceId(), t, n.kind(), n.name());
+    }
+
+    private static MessageDigest sha256() {
+        try {
+            return MessageDigest.getInstance("SHA-256");
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("every Java runtime has SHA-256", e);
+        }
+    }
+
     /** @return the body's (x, y) every 5 mm it moved, for pictures */
     List<double[]> trail() {
         return trail;
@@ -306,6 +352,7 @@ public final class SimulatedRoq implements AutoCloseable {
         private Course course;
         private String courseName;
         private long noise = 1;
+        private boolean sensorNoise = true;
         private final List<String> unloaded = new ArrayList<>();
 
         private Builder() {
@@ -368,11 +415,23 @@ public final class SimulatedRoq implements AutoCloseable {
         }
 
         /**
-         * @param seed the sensor-noise seed (noise is always on; the seed makes it repeatable)
+         * @param seed the sensor-noise seed (noise is on unless {@link #withoutNoise()} turns it off; the seed makes
+         *             it repeatable)
          * @return this
          */
         public Builder noise(long seed) {
             noise = seed;
+            return this;
+        }
+
+        /**
+         * Turns sensor noise off: every sensor reads the plant exactly (for tests of a mechanism rather than of its
+         * robustness). The noise seed is then ignored.
+         *
+         * @return this
+         */
+        public Builder withoutNoise() {
+            sensorNoise = false;
             return this;
         }
 
@@ -397,10 +456,10 @@ public final class SimulatedRoq implements AutoCloseable {
                 throw new IllegalStateException("name a network first: builder().network(Path) or network(NetworkInfo)");
             }
             Course c = course != null ? course : CourseSpec.parse("flat");
-            String label = String.format(Locale.ROOT, "%s on %s, noise %d%s", networkName,
-                    courseName != null ? courseName : "flat", noise,
+            String label = String.format(Locale.ROOT, "%s on %s, %s%s", networkName,
+                    courseName != null ? courseName : "flat", sensorNoise ? "noise " + noise : "noise off",
                     unloaded.isEmpty() ? "" : ", without " + String.join(", ", unloaded));
-            RoqSimulator sim = RoqSimulator.open(c, CourseRun.steppedWithNoise(noise));
+            RoqSimulator sim = RoqSimulator.open(c, simOptions());
             TestNetwork net = null;
             try {
                 net = TestNetwork.start(definition, policy, label, System.currentTimeMillis() * 1000);
@@ -415,6 +474,12 @@ public final class SimulatedRoq implements AutoCloseable {
                 closeAll(net, sim);
                 throw e;
             }
+        }
+
+        /** Stepped; no range sensors (no RoQ node reads them, and they cost a ray cast per sensor each tick). */
+        private SimOptions simOptions() {
+            SimOptions stepped = SimOptions.of(SimMode.STEPPED).withRangeSensors(false);
+            return sensorNoise ? stepped.withNoise(noise) : stepped;
         }
 
         private static void closeAll(TestNetwork net, RoqSimulator sim) {

@@ -33,12 +33,19 @@ class RoqExtensionTest {
     @RoqTest
     static class RobotTests {
         static String hash;
+        static String exactName;
 
         @Test
         void walks(@Roq(network = "../../networks/roq-rubble.fdn", course = "rubble:5", noise = 3) SimulatedRoq roq) {
             roq.runFor(Duration.ofSeconds(2));
             hash = roq.stateHash();
             roq.assertThat().noFall();
+        }
+
+        @Test
+        void readsThePlantExactly(
+                @Roq(network = "../../networks/roq-rubble.fdn", sensorNoise = false) SimulatedRoq roq) {
+            exactName = roq.name();
         }
 
         @Test
@@ -52,8 +59,9 @@ class RoqExtensionTest {
     void shouldPassARobotTestAndLeaveEvidenceOfAFailingOneInItsMessage() throws Exception {
         var events = EngineTestKit.engine("junit-jupiter").selectors(selectClass(RobotTests.class)).execute().testEvents();
 
-        events.assertStatistics(s -> s.started(2).succeeded(1).failed(1));
+        events.assertStatistics(s -> s.started(3).succeeded(2).failed(1));
         assertThat(RobotTests.hash).hasSize(16);
+        assertThat(RobotTests.exactName).as("@Roq(sensorNoise = false)").isEqualTo("roq-rubble.fdn on flat, noise off");
         Throwable failure = events.failed().list().get(0).getRequiredPayload(TestExecutionResult.class).getThrowable()
                 .orElseThrow();
         String message = failure.getMessage();

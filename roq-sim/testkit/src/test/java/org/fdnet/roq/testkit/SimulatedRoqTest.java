@@ -47,6 +47,46 @@ class SimulatedRoqTest {
     }
 
     @Test
+    void shouldGiveTheSameEventLogHashWhenTheSameRunIsRepeatedAtAnotherWallClockTime() throws Exception {
+        String first = eventLogHashAfter(SimulatedRoq.builder().noise(5));
+        Thread.sleep(5); // the next run's driven clock starts at another wall-clock microsecond
+        String second = eventLogHashAfter(SimulatedRoq.builder().noise(5));
+        String otherNoise = eventLogHashAfter(SimulatedRoq.builder().noise(6));
+
+        assertThat(second).isEqualTo(first);
+        assertThat(otherNoise).as("other sensor readings give other values").isNotEqualTo(first);
+    }
+
+    private static String eventLogHashAfter(SimulatedRoq.Builder builder) {
+        try (SimulatedRoq roq = builder.network(RUBBLE_NETWORK).course("flat").start()) {
+            roq.advance(Duration.ofSeconds(1));
+            assertThat(roq.network().events()).hasSizeGreaterThan(100);
+            return roq.eventLogHash();
+        }
+    }
+
+    @Test
+    void shouldRunWithoutSensorNoiseWhenAskedAndSayItInItsName() {
+        String noisy;
+        try (SimulatedRoq roq = SimulatedRoq.builder().network(RUBBLE_NETWORK).course("flat").noise(5).start()) {
+            roq.advance(Duration.ofSeconds(1));
+            noisy = roq.eventLogHash();
+        }
+        String[] exact = new String[2];
+        for (int i = 0; i < 2; i++) {
+            try (SimulatedRoq roq = SimulatedRoq.builder().network(RUBBLE_NETWORK).course("flat").noise(5 + i)
+                    .withoutNoise().start()) {
+                roq.advance(Duration.ofSeconds(1));
+                exact[i] = roq.eventLogHash();
+                assertThat(roq.name()).isEqualTo("roq-rubble.fdn on flat, noise off");
+            }
+        }
+
+        assertThat(exact[1]).as("without noise the seed changes nothing").isEqualTo(exact[0]);
+        assertThat(exact[0]).as("without noise the network reads other values").isNotEqualTo(noisy);
+    }
+
+    @Test
     void shouldMeasureAWalkAndRunHooksEveryStep() {
         try (SimulatedRoq roq = SimulatedRoq.builder().network(RUBBLE_NETWORK).course("flat").noise(2).start()) {
             int[] steps = new int[2];

@@ -1,20 +1,21 @@
 package org.acme.guard;
 
 import org.fdnet.runtime.NodeParameters;
+import org.fdnet.runtime.ParameterSpec;
 import org.fdnet.runtime.Relation;
 import org.fdnet.runtime.RelationContext;
 import org.fdnet.runtime.Value;
 
 /** Raises an alarm while the body tilts more than {@code limit} rad in roll or pitch. Input: attitude. Output: alarm. */
 public class TiltGuard extends Relation {
+    public static final ParameterSpec<Double> LIMIT = ParameterSpec.number("limit").unit("rad").above(0).atMost(1.5)
+            .defaultValue(0.3).describe("the roll or pitch beyond which the alarm is raised").live();
+
     private double limit;
 
     @Override
     protected void init(NodeParameters parameters) {
-        limit = parameters.doubleValue("limit", 0.3);
-        if (!(limit > 0) || limit > 1.5) {
-            throw parameters.invalid("limit", "must lie in (0, 1.5] rad, was " + limit);
-        }
+        limit = LIMIT.read(parameters);
     }
 
     @Override

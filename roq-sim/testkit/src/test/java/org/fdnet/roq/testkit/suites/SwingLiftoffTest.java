@@ -1,8 +1,9 @@
-package org.fdnet.roq.bridge;
+package org.fdnet.roq.testkit.suites;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ExecutorService;
@@ -11,13 +12,11 @@ import java.util.concurrent.Future;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.netinfo.xml.NetworkRepository;
-import org.fdnet.roq.sim.CourseLoader;
 import org.fdnet.roq.sim.RoqGeometry;
-import org.fdnet.roq.sim.RoqSimulator;
 import org.fdnet.roq.sim.SensorSnapshot;
+import org.fdnet.roq.testkit.SimulatedRoq;
 import org.fdnet.runtime.Value;
 import org.fdnet.runtime.cli.ParameterAssignment;
-import org.fdnet.runtime.engine.RuntimeNetwork;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.slf4j.Logger;
@@ -29,20 +28,21 @@ import org.slf4j.LoggerFactory;
  * crust's face (the stance feet creep a few centimetres) is driven into that face while it still bears load — on
  * {@code crossing} that was 14 of 35 loaded-foot breakthroughs over 24 noise seeds (docs/explanation/roq-control.md). Measured by
  * ground truth (forward kinematics of the joint angles and the body's pose): how far each foot moves along the course
- * in the first 0.2 s of its swing while it is still less than 1.5 cm above where the swing began and its sole carries more than 30 N, roq-rubble on {@code crossing} with
- * noise as in the demo, with {@code rise} 0.25 and with it 0 (as shipped: with it, rubble seed 21 and the heading
- * comparison of RoqCoursesTest move, see docs/explanation/roq-control.md).
+ * in the first 0.2 s of its swing while it is still less than 1.5 cm above where the swing began and its sole carries
+ * more than 30 N; roq-rubble on {@code crossing} with seeded sensor noise as in the demo, with {@code rise} 0.25 and
+ * with {@code rise} 0 (roq-rubble ships 0: with the rise, rubble seed 21 and the heading comparison of RoqCoursesTest
+ * move, see docs/explanation/roq-control.md).
  */
 @Timeout(300)
 class SwingLiftoffTest {
     private static final Logger LOG = LoggerFactory.getLogger(SwingLiftoffTest.class);
-    private static final Path RUBBLE = Path.of("..", "networks", "roq-rubble.fdn");
+    private static final Path RUBBLE = Path.of("../../networks/roq-rubble.fdn");
     private static final NodeRef CRAWL = NodeRef.parse("crawl", "Gait");
-    private static final NodeRef PHASE = NodeRef.parse("gait phase", "main");
+    private static final Duration SAMPLE = Duration.ofMillis(5);
     /** A sole carrying more than this is still on the ground, N. */
     private static final double LOADED = 30;
     private static final int SECONDS = 60;
-    /** The rise whose effect this test measures; roq-rubble ships 0 (docs/explanation/roq-control.md says why). */
+    /** The rise measured in docs/explanation/roq-control.md; roq-rubble ships 0, see there. */
     private static final double RISE = 0.25;
     /** A foot less than this above where its swing began has not left the ground yet, m. */
     private static final double STILL_DOWN = 0.015;
@@ -83,19 +83,17 @@ class SwingLiftoffTest {
     }
 
     /** The largest forward move of a swinging foot while it is still down (STILL_DOWN) and its sole bears more than LOADED, m. */
-    private static double largestDrag(NetworkInfo network, long noise) throws Exception {
-        try (RoqSimulator sim = RoqSimulator.open(CourseLoader.resolve("crossing"), CourseRun.steppedWithNoise(noise));
-             RuntimeNetwork net = CourseRun.startStepped(network)) {
-            SimBridge bridge = SimBridge.stepped(net, sim, 0, 1);
+    private static double largestDrag(NetworkInfo network, long noise) {
+        try (SimulatedRoq roq = SimulatedRoq.builder().network(network).course("crossing").noise(noise).start()) {
             int swinging = -1;
             double startX = 0;
             double startZ = 0;
             double swingTime = 0;
             double largest = 0;
             for (int t = 0; t < SECONDS * 1000 / 5; t++) {
-                bridge.run(5);
-                SensorSnapshot s = bridge.lastSnapshot();
-                Value phase = net.controller().value(PHASE);
+                roq.advance(SAMPLE);
+                SensorSnapshot s = roq.snapshot();
+                Value phase = roq.network().value("gait phase");
                 int leg = phase != null && phase.length() >= 2 && phase.element(1) > 0 ? (int) phase.element(0) : -1;
                 if (leg != swinging) {
                     swinging = leg;

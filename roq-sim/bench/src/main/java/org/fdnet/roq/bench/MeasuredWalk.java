@@ -1,0 +1,31 @@
+package org.fdnet.roq.bench;
+
+import java.time.Duration;
+import org.fdnet.netinfo.NetworkInfo;
+import org.fdnet.roq.sim.Course;
+import org.fdnet.roq.testkit.RoqMeasures;
+import org.fdnet.roq.testkit.SimulatedRoq;
+
+/**
+ * One robot run of the sweeps, as a user's robot test runs it: {@code network} on {@code course} with seeded sensor
+ * noise, some modules unloaded, for a number of simulated seconds on a {@link SimulatedRoq}; what the kit measured.
+ *
+ * @param label    what the sweep calls the run
+ * @param measures the kit's ground-truth measures at the end
+ */
+record MeasuredWalk(String label, RoqMeasures measures) {
+    /** Runs {@code network} on {@code course} for {@code seconds} of simulated time, noise seed {@code noise}. */
+    static MeasuredWalk of(String label, NetworkInfo network, Course course, int seconds, long noise,
+                           String... unloaded) {
+        try (SimulatedRoq roq = SimulatedRoq.builder().network(network).course(course).noise(noise).unload(unloaded)
+                .start()) {
+            roq.runFor(Duration.ofSeconds(seconds));
+            return new MeasuredWalk(label, roq.measures());
+        }
+    }
+
+    @Override
+    public String toString() {
+        return label + ": " + measures;
+    }
+}

@@ -13,6 +13,7 @@ import org.HdrHistogram.Histogram;
 import org.HdrHistogram.Recorder;
 import org.fdnet.logger.InProcessLogger;
 import org.fdnet.event.DataValueEvent;
+import org.fdnet.event.EventClock;
 import org.fdnet.event.NodeNamedEvent;
 import org.fdnet.event.TypedValue;
 import org.fdnet.event.client.LoggerClient;
@@ -150,7 +151,12 @@ public final class BenchViewerCommand implements Callable<Integer> {
         return 0;
     }
 
+    /**
+     * Stamps the producer's ticks as an engine stamps values: unique and increasing per source even when a late
+     * thread catches up several ticks within one microsecond (two equal stamps of one source are one key twice).
+     */
     private void write(LoggerClient writer, AtomicBoolean writing, AtomicLong written) {
+        EventClock stamps = new EventClock();
         long period = 1_000_000_000L / rate;
         long next = System.nanoTime();
         long tick = 0;
@@ -160,8 +166,7 @@ public final class BenchViewerCommand implements Callable<Integer> {
                 LockSupport.parkNanos(wait);
                 continue;
             }
-            long time = nowMicros();
-            String v = "";
+            long time = stamps.next();
             for (int i = 0; i < series; i++) {
                 double value = Math.sin(tick * 0.002 * Math.PI + i * 0.3) * (1 + i % 5) + i % 7 * 0.1;
                 writer.accept(new DataValueEvent(i, time, TypedValue.of(value)));

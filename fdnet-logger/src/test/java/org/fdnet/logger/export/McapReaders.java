@@ -33,7 +33,8 @@ public final class McapReaders {
         scripts = dir.resolve("fdnet-logger/src/test/readers");
         if (!Files.isExecutable(python) || !Files.exists(nodeModules.resolve("@mcap/core/package.json"))) {
             throw new IllegalStateException("the MCAP readers (Python mcap, @mcap/core) are not installed in "
-                    + dir.resolve("target/mcap-readers") + ": run .ci/mcap-readers (.ci/run does)");
+                    + dir.resolve("target/mcap-readers") + ": run .ci/mcap-readers (the fdnet-logger build runs it"
+                    + " before its tests)");
         }
     }
 

@@ -20,7 +20,9 @@ class LabWalkTest {
             @Roq(network = "networks/lab-walk.fdn", course = "flat", noise = 7) SimulatedRoq roq) {
         roq.runFor(Duration.ofSeconds(20));
 
-        roq.assertThat().noFall().walkedAtLeast(0.4).tiltAtMost(0.2);
+        // 0.34 m: 20 % below the median distance over noise seeds 1, 2, 3, 11, 23 and 42 (0.43 m, all within
+        // 0.427-0.450 m); 0.2 rad: five times the largest tilt those runs had (0.042 rad).
+        roq.assertThat().noFall().walkedAtLeast(0.34).tiltAtMost(0.2);
         assertTrue(roq.network().value("Lab/pitch correction") != null, "the Lab's correction was never written");
     }
 }

@@ -13,6 +13,14 @@ import org.fdnet.tls.TransportSecurity;
  * user says {@code --bind}), fail a call to a dead host in well under a second (JacORB's default retries
  * for 2.5 s), and keep JacORB's request queue far above what the bounded link windows can fill.
  *
+ * <p>A <em>silent</em> peer (a pulled cable, a radio out of range: packets dropped, no reset) is bounded three ways,
+ * all by {@code callTimeoutMillis}: a connect gives up after {@link #connectTimeoutMillis()}; a call waits for its
+ * reply at most {@code callTimeoutMillis} ({@code TIMEOUT}); and a client connection on which nothing at all was
+ * received for {@code callTimeoutMillis} is closed even with replies pending (they fail with {@code COMM_FAILURE}),
+ * so the next call opens a new connection. Without the last, JacORB keeps the dead TCP connection: every later
+ * call queues behind segments the kernel retransmits with exponential back-off (up to 2 minutes between tries),
+ * and a peer back after a 30 s outage is heard again only a minute later.
+ *
  * @param bindAddress     the address the ORB listens on and writes into its object references
  * @param port            the listening port; 0 picks a free one
  * @param namingReference the {@code corbaloc} of the naming service, or {@code null} when not needed
@@ -27,6 +35,8 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
                           int poaQueueMax, int poaThreadsMax) {
 
     public static final String LOOPBACK = "127.0.0.1";
+    /** A peer that has not answered a connect in this long is taken as unreachable (a LAN answers in milliseconds). */
+    public static final int MAX_CONNECT_TIMEOUT_MILLIS = 2_000;
 
     // JacORB and OMG property keys.
     private static final String ORB_CLASS = "org.omg.CORBA.ORBClass";
@@ -36,6 +46,8 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
     private static final String NAMING_INIT_REF = "ORBInitRef.NameService";
     private static final String REPLY_TIMEOUT = "jacorb.connection.client.pending_reply_timeout";
     private static final String CONNECT_TIMEOUT = "jacorb.connection.client.connect_timeout";
+    private static final String IDLE_TIMEOUT = "jacorb.connection.client.idle_timeout";
+    private static final String TIMEOUT_IGNORES_PENDING = "jacorb.connection.client.timeout_ignores_pending_messages";
     private static final String RETRIES = "jacorb.retries";
     private static final String RETRY_INTERVAL = "jacorb.retry_interval";
     private static final String POA_QUEUE_MAX = "jacorb.poa.queue_max";
@@ -118,6 +130,11 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
         return new OrbSettings(bindAddress, port, namingReference, millis, poaQueueMax, poaThreadsMax);
     }
 
+    /** How long opening a connection may take: the call timeout, at most {@value #MAX_CONNECT_TIMEOUT_MILLIS} ms. */
+    public int connectTimeoutMillis() {
+        return Math.min(callTimeoutMillis, MAX_CONNECT_TIMEOUT_MILLIS);
+    }
+
     /** The properties handed to {@code ORB.init}. */
     public Properties toOrbProperties() {
         Properties p = new Properties();
@@ -140,7 +157,9 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
             }
         }
         p.setProperty(REPLY_TIMEOUT, Integer.toString(callTimeoutMillis));
-        p.setProperty(CONNECT_TIMEOUT, Integer.toString(Math.min(callTimeoutMillis, 2_000)));
+        p.setProperty(CONNECT_TIMEOUT, Integer.toString(connectTimeoutMillis()));
+        p.setProperty(IDLE_TIMEOUT, Integer.toString(callTimeoutMillis));
+        p.setProperty(TIMEOUT_IGNORES_PENDING, "on");
         // A dead host must be noticed quickly; links and the coordinator retry on their own terms.
         p.setProperty(RETRIES, "0");
         p.setProperty(RETRY_INTERVAL, "100");

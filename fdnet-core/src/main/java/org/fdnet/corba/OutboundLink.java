@@ -76,6 +76,8 @@ public final class OutboundLink implements AutoCloseable {
     private boolean stallReported;
     private long generation;
     private ValueSink sink;
+    /** The longest {@code deliver} call since {@link #takeLongestCallMillis} was last asked, ms. */
+    private long longestCallMillis;
 
     /**
      * @param stream the identity values written locally get here (see {@link ValueOrigin}): unique per host
@@ -200,6 +202,18 @@ public final class OutboundLink implements AutoCloseable {
     public long pending() {
         synchronized (lock) {
             return tailSeq - headSeq;
+        }
+    }
+
+    /**
+     * The longest a {@code deliver} call took — answered, refused or timed out — since the last time this was asked
+     * (then 0 again): what a silent peer costs the link's caller threads, bounded by the ORB's call timeout.
+     */
+    public long takeLongestCallMillis() {
+        synchronized (lock) {
+            long longest = longestCallMillis;
+            longestCallMillis = 0;
+            return longest;
         }
     }
 
@@ -332,6 +346,7 @@ public final class OutboundLink implements AutoCloseable {
         }
         long expected;
         String failure;
+        long callStarted = System.nanoTime();
         try {
             ValueBatch delivery = new ValueBatch(id, firstSeq, batch.originStream(), batch.originFirstSeq(), encoded);
             expected = LinkFaults.deliver(() -> batch.target().deliver(delivery));
@@ -345,7 +360,9 @@ public final class OutboundLink implements AutoCloseable {
         }
         boolean restored = false;
         boolean newlyBroken = false;
+        long callMillis = (System.nanoTime() - callStarted) / 1_000_000;
         synchronized (lock) {
+            longestCallMillis = Math.max(longestCallMillis, callMillis);
             if (batch.generation() == generation) {
                 inFlight--;
                 if (failure == null) {

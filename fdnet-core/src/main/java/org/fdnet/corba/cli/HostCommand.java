@@ -4,7 +4,11 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
 import org.fdnet.corba.ClassPolicy;
+import org.fdnet.corba.HostHealth;
 import org.fdnet.corba.HostProcess;
 import org.fdnet.corba.HostUnreachableException;
 import org.fdnet.corba.LinkFaults;
@@ -45,6 +49,11 @@ public final class HostCommand implements Callable<Integer> {
             description = "soak tests: FILE switches faults in this host's outgoing links on (drop=SHARE,delay=MS)"
                     + " and off (empty or missing) while it runs (see fdnet soak)")
     Path linkFaults;
+
+    @Option(names = "--health-every", paramLabel = "SECONDS", hidden = true,
+            description = "soak tests: print one line every SECONDS on what this host holds for peers it cannot reach"
+                    + " (link values waiting, logger events in memory and in the journal) and its longest link call")
+    Integer healthEvery;
 
     @Mixin
     NamingOptions naming;
@@ -91,7 +100,22 @@ public final class HostCommand implements Callable<Integer> {
         System.out.println("fdnet host " + name + " ready (naming " + naming.corbaloc() + ", "
                 + engine.runtime().workerThreads() + " worker threads)");
         System.out.flush();
+        if (healthEvery != null && healthEvery > 0) {
+            reportHealth(host, engine, healthEvery);
+        }
         NamingCommand.awaitStop();
         return 0;
+    }
+
+    private void reportHealth(HostProcess host, RuntimeLocalNetwork engine, int everySeconds) {
+        ScheduledExecutorService reporter = Executors.newSingleThreadScheduledExecutor(r -> {
+                    Thread t = new Thread(r, "fdnet-host-health");
+                    t.setDaemon(true);
+                    return t;
+                });
+        reporter.scheduleAtFixedRate(() -> {
+            System.out.println(HostHealth.line(name, host.servant(), engine));
+            System.out.flush();
+        }, everySeconds, everySeconds, TimeUnit.SECONDS);
     }
 }

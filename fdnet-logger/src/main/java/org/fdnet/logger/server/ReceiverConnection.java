@@ -76,12 +76,12 @@ final class ReceiverConnection extends Connection {
         owners.claim(run, this);
         Thread acker = new Thread(this::sendAcks, "fdnet-acks-" + socket.getRemoteSocketAddress());
         acker.setDaemon(true);
-        acker.start();
         synchronized (run) {
             run.ackListener(this::ack);
             long committed = run.committed();
             send(w -> w.begin(MessageType.WELCOME).putShort(Protocol.VERSION).putLong(committed));
         }
+        acker.start(); // after the WELCOME: its first frame may be a heartbeat
         LOG.info("core {} connected: run {} (id {}), resuming after event {}", describe(), run.uuid(), run.runId(),
                 run.committed());
         return true;
@@ -100,18 +100,27 @@ final class ReceiverConnection extends Connection {
         }
     }
 
+    /**
+     * Sends each commit's ACK, and repeats the last one every {@link Protocol#ACK_HEARTBEAT_MILLIS} while nothing newer
+     * is committed: the core takes a silent connection for dead, and must not while the database is merely slow.
+     */
     private void sendAcks() {
         long sent = 0;
         try {
             while (!socket.isClosed()) {
                 long seq;
                 synchronized (ackLock) {
+                    long heartbeatAt = System.nanoTime() + Protocol.ACK_HEARTBEAT_MILLIS * 1_000_000L;
                     while (ackWanted <= sent && !socket.isClosed()) {
-                        ackLock.wait(500);
+                        long left = heartbeatAt - System.nanoTime();
+                        if (left <= 0) {
+                            break;
+                        }
+                        ackLock.wait(Math.max(1, left / 1_000_000));
                     }
                     seq = ackWanted;
                 }
-                if (seq > sent) {
+                if (!socket.isClosed()) {
                     send(w -> w.begin(MessageType.ACK).putLong(seq));
                     sent = seq;
                 }

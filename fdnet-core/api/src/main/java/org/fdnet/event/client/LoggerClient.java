@@ -50,6 +50,7 @@ import org.slf4j.LoggerFactory;
 public final class LoggerClient implements EventSink {
     private static final Logger LOG = LoggerFactory.getLogger(LoggerClient.class);
     private static final long LOSS_REPORT_NANOS = TimeUnit.SECONDS.toNanos(10);
+    private static final int CONNECT_TIMEOUT_MILLIS = 5000;
 
     private final LoggerClientSettings settings;
     private final UUID run;
@@ -271,7 +272,10 @@ public final class LoggerClient implements EventSink {
     private void sendLoop() {
         boolean reported = false;
         while (!closing) {
-            try (Socket s = TransportSecurity.connect(settings.host(), settings.port(), 5000)) {
+            try (Socket s = TransportSecurity.connect(settings.host(), settings.port(), CONNECT_TIMEOUT_MILLIS)) {
+                // Every read — the handshake's and the ACKs' — gives up after the silence timeout: the logger repeats
+                // its last ACK every second, so a silent connection is a dead one (a partition drops, never resets).
+                s.setSoTimeout((int) settings.silenceTimeout().toMillis());
                 socket = s;
                 serve(s);
                 reported = false;
@@ -423,6 +427,11 @@ public final class LoggerClient implements EventSink {
                 } else {
                     throw new ProtocolException("unexpected " + f.type() + " from the logger");
                 }
+            }
+        } catch (java.net.SocketTimeoutException e) {
+            if (!closing) {
+                LOG.warn("logger at {}:{} silent for {} ms (partitioned?); connecting again", settings.host(),
+                        settings.port(), settings.silenceTimeout().toMillis());
             }
         } catch (IOException e) {
             if (!closing) {

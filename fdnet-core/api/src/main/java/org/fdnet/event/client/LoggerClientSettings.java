@@ -15,10 +15,17 @@ import java.util.Objects;
  * @param journalBytes    the journal's bound; beyond it events are lost, counted and reported
  * @param reconnectDelay  wait between attempts to reach an absent logger
  * @param flushTimeout    how long {@link LoggerClient#flush()} and close wait for the logger's commits
+ * @param silenceTimeout  a connection on which the logger sent nothing for this long — not even the ACK it repeats
+ *                        every {@value org.fdnet.event.wire.Protocol#ACK_HEARTBEAT_MILLIS} ms — is dead: it is closed
+ *                        and made again, and everything not acknowledged is sent again (a silent network drops
+ *                        packets without a reset, and TCP alone would keep the connection for many minutes)
  */
 public record LoggerClientSettings(String host, int port, String coreName, int memoryEvents,
                                    Path journalDirectory, long journalBytes, Duration reconnectDelay,
-                                   Duration flushTimeout) {
+                                   Duration flushTimeout, Duration silenceTimeout) {
+    /** Five heartbeats: a logger that stalls for a second or two (a long garbage collection) is not cut off. */
+    public static final Duration DEFAULT_SILENCE_TIMEOUT = Duration.ofSeconds(5);
+
     /**
      * Checks the settings.
      *
@@ -30,6 +37,7 @@ public record LoggerClientSettings(String host, int port, String coreName, int m
      * @param journalBytes     the journal's bound, at least 0 (0: no journal)
      * @param reconnectDelay   wait between attempts to reach the logger
      * @param flushTimeout     how long a flush waits for commits
+     * @param silenceTimeout   how long a connection may be silent before it is taken for dead, more than the heartbeat
      * @throws IllegalArgumentException when a number is out of its range, naming it
      */
     public LoggerClientSettings {
@@ -45,10 +53,17 @@ public record LoggerClientSettings(String host, int port, String coreName, int m
         if (journalBytes < 0) {
             throw new IllegalArgumentException("journalBytes must be at least 0, was " + journalBytes);
         }
+        Objects.requireNonNull(silenceTimeout, "silenceTimeout");
+        if (silenceTimeout.toMillis() <= org.fdnet.event.wire.Protocol.ACK_HEARTBEAT_MILLIS
+                || silenceTimeout.toMillis() > Integer.MAX_VALUE) {
+            throw new IllegalArgumentException("silenceTimeout must be longer than the logger's heartbeat ("
+                    + org.fdnet.event.wire.Protocol.ACK_HEARTBEAT_MILLIS + " ms), was " + silenceTimeout.toMillis() + " ms");
+        }
     }
 
     /**
-     * Defaults: 200,000 events in memory, a 1 GiB journal under the temp directory, 500 ms reconnect, 60 s flush.
+     * Defaults: 200,000 events in memory, a 1 GiB journal under the temp directory, 500 ms reconnect, 60 s flush,
+     * a connection silent for {@link #DEFAULT_SILENCE_TIMEOUT} taken for dead.
      *
      * @param host     the logger's receiver address
      * @param port     the receiver port
@@ -59,7 +74,7 @@ public record LoggerClientSettings(String host, int port, String coreName, int m
         Path dir = Path.of(System.getProperty("java.io.tmpdir"), "fdnet-journal-" + ProcessHandle.current().pid()
                 + "-" + System.nanoTime());
         return new LoggerClientSettings(host, port, coreName, 200_000, dir, 1L << 30,
-                Duration.ofMillis(500), Duration.ofSeconds(60));
+                Duration.ofMillis(500), Duration.ofSeconds(60), DEFAULT_SILENCE_TIMEOUT);
     }
 
     /**
@@ -70,7 +85,7 @@ public record LoggerClientSettings(String host, int port, String coreName, int m
      * @throws IllegalArgumentException when {@code events} is below 1000
      */
     public LoggerClientSettings withMemoryEvents(int events) {
-        return new LoggerClientSettings(host, port, coreName, events, journalDirectory, journalBytes, reconnectDelay, flushTimeout);
+        return new LoggerClientSettings(host, port, coreName, events, journalDirectory, journalBytes, reconnectDelay, flushTimeout, silenceTimeout);
     }
 
     /**
@@ -82,7 +97,7 @@ public record LoggerClientSettings(String host, int port, String coreName, int m
      * @throws IllegalArgumentException when {@code bytes} is negative
      */
     public LoggerClientSettings withJournal(Path directory, long bytes) {
-        return new LoggerClientSettings(host, port, coreName, memoryEvents, directory, bytes, reconnectDelay, flushTimeout);
+        return new LoggerClientSettings(host, port, coreName, memoryEvents, directory, bytes, reconnectDelay, flushTimeout, silenceTimeout);
     }
 
     /**
@@ -92,7 +107,7 @@ public record LoggerClientSettings(String host, int port, String coreName, int m
      * @return new settings
      */
     public LoggerClientSettings withFlushTimeout(Duration timeout) {
-        return new LoggerClientSettings(host, port, coreName, memoryEvents, journalDirectory, journalBytes, reconnectDelay, timeout);
+        return new LoggerClientSettings(host, port, coreName, memoryEvents, journalDirectory, journalBytes, reconnectDelay, timeout, silenceTimeout);
     }
 
     /**

@@ -15,6 +15,11 @@ public final class Protocol {
     public static final int DEFAULT_MAX_FRAME_BYTES = 1 << 20;
     /** The events one EVENTS frame carries at most: keeps frames well under the default maximum. */
     public static final int MAX_EVENTS_PER_FRAME = 2048;
+    /**
+     * How often the receiver repeats its last ACK to a core while it has committed nothing newer: a core that hears
+     * nothing for several of these takes the connection for dead (a silent network drops packets without a reset).
+     */
+    public static final int ACK_HEARTBEAT_MILLIS = 1000;
 
     /** A HELLO's role of a core: it sends events. */
     public static final int ROLE_CORE = 1;

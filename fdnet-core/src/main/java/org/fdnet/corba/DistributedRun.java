@@ -28,6 +28,12 @@ import org.fdnet.runtime.engine.RuntimeOptions;
  */
 public final class DistributedRun implements AutoCloseable {
     /**
+     * How often the run pings every host. A host that stops answering — dead, or silent behind a partition — is
+     * reported lost within this plus the ORB's call timeout ({@link OrbSettings#callTimeoutMillis()}), and a lost host
+     * that answers again is re-wired within the same.
+     */
+    public static final long HOST_PING_MILLIS = 250;
+    /**
      * What a distributed run needs: the network, where hosts register, this process's host name and engine
      * options (event sinks), who else hears host and link events ({@code events}), the logger the hosts record with
      * ({@code null}: none but their own), the logger's viewer address the control object tells attached tools, the
@@ -110,7 +116,7 @@ public final class DistributedRun implements AutoCloseable {
         try {
             deployment = NetworkDeployment.start(plan, HostDirectory.connect(local.orb()),
                     Map.of(request.localHostName(), local.reference()), new PrintingListener(out, started),
-                    EventSink.both(request.events(), engine::record), LinkSettings.defaults().window(), 10_000, 250,
+                    EventSink.both(request.events(), engine::record), LinkSettings.defaults().window(), 10_000, HOST_PING_MILLIS,
                     new RunRecording(run, request.loggerAddress(), request.workers(),
                             request.trace() == null ? 0 : TraceCollector.HOST_CAPACITY));
         } catch (DeploymentException | HostUnreachableException e) {

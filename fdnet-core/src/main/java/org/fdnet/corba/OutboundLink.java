@@ -35,7 +35,7 @@ public final class OutboundLink implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(OutboundLink.class);
     private static final AtomicInteger THREADS = new AtomicInteger();
     /** The longest a writer waits for room while the peer acknowledges nothing. */
-    static final long MAX_WRITER_WAIT_MILLIS = 2_000;
+    public static final long MAX_WRITER_WAIT_MILLIS = 2_000;
 
     /** Told when a link breaks and when it carries values again. */
     public interface StateListener {

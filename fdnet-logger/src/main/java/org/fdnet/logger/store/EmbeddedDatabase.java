@@ -41,7 +41,16 @@ public final class EmbeddedDatabase implements AutoCloseable {
      * for no disk; a power loss or kernel crash can lose committed events or corrupt the data folder).
      */
     public static EmbeddedDatabase start(Path directory, int port, boolean fsync) throws IOException {
-        return start(directory, port, fsync, false);
+        return start(directory, port, fsync, false, null);
+    }
+
+    /**
+     * Starts PostgreSQL on the folder, also listening on its Unix socket {@code socketDirectory/.s.PGSQL.PORT}: how a
+     * process in another network namespace of this machine reaches it (the file system is shared, the loopback is
+     * not). The socket's path must stay under the 107 bytes the kernel allows.
+     */
+    public static EmbeddedDatabase start(Path directory, int port, Path socketDirectory) throws IOException {
+        return start(directory, port, true, false, socketDirectory);
     }
 
     /**
@@ -49,11 +58,11 @@ public final class EmbeddedDatabase implements AutoCloseable {
      * benchmark leaves gigabytes of WAL and rows otherwise).
      */
     public static EmbeddedDatabase startThrowaway(Path directory) throws IOException {
-        return start(directory, 0, true, true);
+        return start(directory, 0, true, true, null);
     }
 
-    private static EmbeddedDatabase start(Path directory, int port, boolean fsync, boolean deleteOnClose)
-            throws IOException {
+    private static EmbeddedDatabase start(Path directory, int port, boolean fsync, boolean deleteOnClose,
+                                          Path socketDirectory) throws IOException {
         Files.createDirectories(directory);
         EmbeddedPostgres.Builder b = EmbeddedPostgres.builder()
                 .setDataDirectory(directory)
@@ -64,6 +73,9 @@ public final class EmbeddedDatabase implements AutoCloseable {
                 .setServerConfig("listen_addresses", "127.0.0.1");
         if (port > 0) {
             b.setPort(port);
+        }
+        if (socketDirectory != null) {
+            b.setServerConfig("unix_socket_directories", socketDirectory.toAbsolutePath().toString());
         }
         EmbeddedPostgres pg = b.start();
         EmbeddedDatabase db = new EmbeddedDatabase(directory, pg);

@@ -5,21 +5,99 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * When each fault happens: one cycle of every kind per minute (the whole run when it is shorter), kinds spaced so
- * that each heals before the next starts; the killed host alternates between the crawler and the flyer.
+ * When each fault happens, in cycles. The plain soak's cycle holds one fault of every process kind per minute (the
+ * whole run when it is shorter), spaced so that each heals before the next starts; the killed host alternates between
+ * the crawler and the flyer. With {@code --apart}, cycles of network faults come between them, in this order:
+ * <pre>
+ *   network (60 s): crawler/flyer black-holed 5 s, logger black-holed 8 s, naming black-holed 8 s,
+ *                   a host throttled to 1 Mbit/s 8 s, 5 % loss on every link 10 s
+ *   plain (60 s) ─ a host black-holed 30 s (60 s) ─ plain ─ 5 % loss on every link 60 s (75 s) ─ plain
+ *   ─ a host black-holed 120 s (180 s) ─ plain ─ then again from the start
+ * </pre>
+ * A cycle is planned only when it fits in the run, so {@code --apart --for 60s} is one network cycle.
  *
- * @param cycleMillis length of one cycle
- * @param faults      the faults in time order, {@code atMillis} after the soak's start
+ * @param faults the faults in time order, {@code atMillis} after the soak's start
  */
-record FaultPlan(long cycleMillis, List<Planned> faults) {
+record FaultPlan(List<Planned> faults) {
     static final long MIN_MILLIS = 45_000;
+    static final long APART_MIN_MILLIS = 60_000;
     static final long DATABASE_OUTAGE_MILLIS = 10_000;
     static final double LINK_DROP = 0.2;
     static final int LINK_DELAY_MILLIS = 20;
+    static final int LOSS_PERCENT = 5;
+    static final int THROTTLE_KBIT_PER_SECOND = 1000;
 
-    /** One fault of the plan; {@code target} names the host for a host kill. */
+    /** One fault of the plan; {@code target} names the host for a host kill, partition or throttle. */
     record Planned(FaultKind kind, long atMillis, long lengthMillis, String target) {
     }
+
+    /** A cycle: its length and its faults' offsets within it; {@code n} counts cycles of its kind (alternates hosts). */
+    private interface Cycle {
+        long length(long total);
+
+        void plan(long start, long length, int n, List<Planned> into);
+    }
+
+    private static final Cycle PLAIN = new Cycle() {
+        @Override
+        public long length(long total) {
+            return Math.min(60_000, total);
+        }
+
+        @Override
+        public void plan(long start, long cycle, int n, List<Planned> faults) {
+            faults.add(new Planned(FaultKind.LINK_FAULTS, start + linkFrom(cycle), linkLength(cycle), "flyer, crawler"));
+            faults.add(new Planned(FaultKind.HOST_KILL, start + cycle * 25 / 100, 0, host(n)));
+            faults.add(new Planned(FaultKind.LOGGER_KILL, start + cycle * 42 / 100, 0, "logger"));
+            faults.add(new Planned(FaultKind.DATABASE_STOP, start + cycle * 56 / 100, DATABASE_OUTAGE_MILLIS, "PostgreSQL"));
+            faults.add(new Planned(FaultKind.NAMING_RESTART, start + cycle * 82 / 100, 0, "naming"));
+        }
+    };
+
+    private static final Cycle NETWORK = new Cycle() {
+        @Override
+        public long length(long total) {
+            return 60_000;
+        }
+
+        @Override
+        public void plan(long start, long cycle, int n, List<Planned> faults) {
+            faults.add(new Planned(FaultKind.HOST_PARTITION, start + 2_000, 5_000, host(n)));
+            faults.add(new Planned(FaultKind.LOGGER_PARTITION, start + 13_000, 8_000, "logger"));
+            faults.add(new Planned(FaultKind.NAMING_PARTITION, start + 25_000, 8_000, "naming"));
+            faults.add(new Planned(FaultKind.THROTTLE, start + 37_000, 8_000, host(n + 1)));
+            faults.add(new Planned(FaultKind.LOSS, start + 47_000, 10_000, "every host"));
+        }
+    };
+
+    private static Cycle partition(long outageMillis, long cycleMillis) {
+        return new Cycle() {
+            @Override
+            public long length(long total) {
+                return cycleMillis;
+            }
+
+            @Override
+            public void plan(long start, long cycle, int n, List<Planned> faults) {
+                faults.add(new Planned(FaultKind.HOST_PARTITION, start + 2_000, outageMillis, host(n + 1)));
+            }
+        };
+    }
+
+    private static final Cycle LOSS_MINUTE = new Cycle() {
+        @Override
+        public long length(long total) {
+            return 75_000;
+        }
+
+        @Override
+        public void plan(long start, long cycle, int n, List<Planned> faults) {
+            faults.add(new Planned(FaultKind.LOSS, start + 2_000, 60_000, "every host"));
+        }
+    };
+
+    private static final List<Cycle> APART_ORDER = List.of(NETWORK, PLAIN, partition(30_000, 60_000), PLAIN,
+            LOSS_MINUTE, PLAIN, partition(120_000, 180_000), PLAIN);
 
     /**
      * @throws IllegalArgumentException when {@code duration} is too short for every kind
@@ -30,17 +108,44 @@ record FaultPlan(long cycleMillis, List<Planned> faults) {
             throw new IllegalArgumentException("--for must be at least " + MIN_MILLIS / 1000 + "s to fit every fault"
                     + " kind with time to heal, was " + duration.toSeconds() + "s");
         }
-        long cycle = Math.min(60_000, total);
         List<Planned> faults = new ArrayList<>();
+        long cycle = PLAIN.length(total);
         int n = 0;
         for (long start = 0; start + cycle <= total; start += cycle, n++) {
-            faults.add(new Planned(FaultKind.LINK_FAULTS, start + linkFrom(cycle), linkLength(cycle), "flyer, crawler"));
-            faults.add(new Planned(FaultKind.HOST_KILL, start + cycle * 25 / 100, 0, n % 2 == 0 ? "crawler" : "flyer"));
-            faults.add(new Planned(FaultKind.LOGGER_KILL, start + cycle * 42 / 100, 0, "logger"));
-            faults.add(new Planned(FaultKind.DATABASE_STOP, start + cycle * 56 / 100, DATABASE_OUTAGE_MILLIS, "PostgreSQL"));
-            faults.add(new Planned(FaultKind.NAMING_RESTART, start + cycle * 82 / 100, 0, "naming"));
+            PLAIN.plan(start, cycle, n, faults);
         }
-        return new FaultPlan(cycle, List.copyOf(faults));
+        return new FaultPlan(List.copyOf(faults));
+    }
+
+    /**
+     * The plan of {@code fdnet soak --apart}: network cycles and plain ones, in {@link #APART_ORDER}, while they fit.
+     *
+     * @throws IllegalArgumentException when {@code duration} is shorter than one network cycle
+     */
+    static FaultPlan apart(Duration duration) {
+        long total = duration.toMillis();
+        if (total < APART_MIN_MILLIS) {
+            throw new IllegalArgumentException("--for must be at least " + APART_MIN_MILLIS / 1000 + "s with --apart to"
+                    + " fit every network fault kind with time to heal, was " + duration.toSeconds() + "s");
+        }
+        List<Planned> faults = new ArrayList<>();
+        java.util.Map<Cycle, Integer> seen = new java.util.IdentityHashMap<>();
+        long start = 0;
+        for (int i = 0; ; i++) {
+            Cycle c = APART_ORDER.get(i % APART_ORDER.size());
+            long length = c.length(total);
+            if (start + length > total) {
+                break;
+            }
+            int n = seen.merge(c, 1, Integer::sum) - 1;
+            c.plan(start, length, n, faults);
+            start += length;
+        }
+        return new FaultPlan(List.copyOf(faults));
+    }
+
+    private static String host(int n) {
+        return n % 2 == 0 ? "crawler" : "flyer";
     }
 
     static long linkFrom(long cycle) {

@@ -12,6 +12,7 @@ import java.util.EnumSet;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.Callable;
+import org.fdnet.apart.ApartRig;
 import org.fdnet.corba.FdnetChildProcess;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.cli.DurationText;
@@ -30,6 +31,11 @@ import picocli.CommandLine.Spec;
                 + " and delayed), kill -9 of a host and of the logger (both started again), PostgreSQL stopped for"
                 + " 10 s, the naming service restarted. Then count, per node, values applied against stored,"
                 + " duplicates and gaps, and the time each fault took to heal.",
+                "With --apart every process runs on a host of its own (a network namespace with its own address; root"
+                        + " only) and network faults come in cycles of their own: a host's link black-holed for 5 s, 30 s"
+                        + " and 120 s, the logger's and the naming service's black-holed, 5 % loss on every link, a link"
+                        + " throttled to 1 Mbit/s; each is checked against the time bounds of detection, re-wiring, the"
+                        + " longest call and a Relation's stall.",
                 "Exit 0 when no acknowledged value was lost, 1 otherwise."})
 public final class SoakCommand implements Callable<Integer> {
     private static final long VALUE_PERIOD_MILLIS = 50;
@@ -37,6 +43,8 @@ public final class SoakCommand implements Callable<Integer> {
     private static final int COPIES = 1;
     private static final long SETTLE_MILLIS = 60_000;
     private static final List<String> HOSTS = List.of("flyer", "crawler");
+    /** What the names of the soak's namespaces start with ({@code ip netns list}). */
+    private static final String RIG_PREFIX = "fdnetsoak";
     private static final NodeRef SEQ = new NodeRef("main", "Seq");
     private static final NodeRef ECHO = new NodeRef("main", "Echo");
     private static final List<NodeRef> UNCOUNTED = List.of(new NodeRef("main", "Map"), new NodeRef("main", "Heading"),
@@ -55,6 +63,10 @@ public final class SoakCommand implements Callable<Integer> {
             description = "folder for the database, the network and the switch files (default: a new temporary one)")
     Path work;
 
+    @Option(names = "--apart", description = "run every process on a host of its own (network namespaces made for the"
+            + " soak; needs root) and add the network faults: black holes, loss, a throttled link")
+    boolean apart;
+
     @Spec
     CommandSpec spec;
 
@@ -66,7 +78,7 @@ public final class SoakCommand implements Callable<Integer> {
         Path network;
         boolean temporary = work == null;
         try {
-            plan = FaultPlan.of(duration);
+            plan = apart ? FaultPlan.apart(duration) : FaultPlan.of(duration);
             work = work != null ? Files.createDirectories(work) : Files.createTempDirectory("fdnet-soak-");
             network = SoakNetwork.write(twoRobots != null ? twoRobots : defaultTwoRobots(), work);
         } catch (IllegalArgumentException | IOException e) {
@@ -74,11 +86,34 @@ public final class SoakCommand implements Callable<Integer> {
             return 2;
         }
         Path linkSwitch = work.resolve("link-faults");
-        out.printf("fdnet soak: %d s of faults on %s (hosts %s, operator, logger on PostgreSQL); work folder %s%n",
-                duration.toSeconds(), network.getFileName(), HOSTS, work);
+        ApartRig rig = null;
+        if (apart) {
+            try {
+                rig = ApartRig.create(RIG_PREFIX, SoakPlacement.PROCESSES);
+            } catch (IllegalStateException e) {
+                err.println("fdnet soak --apart: " + e.getMessage());
+                return 1;
+            }
+        }
+        try {
+            return soak(out, err, plan, network, linkSwitch, rig, temporary);
+        } finally {
+            if (rig != null) {
+                rig.close();
+            }
+        }
+    }
+
+    private int soak(PrintWriter out, PrintWriter err, FaultPlan plan, Path network, Path linkSwitch, ApartRig rig,
+                     boolean temporary) throws Exception {
+        SoakPlacement placement = rig == null ? SoakPlacement.loopback() : SoakPlacement.apart(rig);
+        out.printf("fdnet soak: %d s of faults on %s (hosts %s, operator, logger on PostgreSQL%s); work folder %s%n",
+                duration.toSeconds(), network.getFileName(), HOSTS, rig == null ? ""
+                        : "; apart: " + SoakPlacement.PROCESSES.stream().map(p -> p + " " + placement.address(p))
+                        .collect(java.util.stream.Collectors.joining(", ")), work);
         out.flush();
         int result;
-        try (SoakCluster cluster = new SoakCluster(work)) {
+        try (SoakCluster cluster = new SoakCluster(work, placement)) {
             long fromMicros = System.currentTimeMillis() * 1_000;
             FdnetChildProcess run;
             try {
@@ -91,17 +126,19 @@ public final class SoakCommand implements Callable<Integer> {
             SoakDatabase database = new SoakDatabase(cluster.databaseTarget(), fromMicros);
             SequenceWriter writer = new SequenceWriter(run, VALUE_PERIOD_MILLIS);
             DeliveryWatch watch = new DeliveryWatch(database, ECHO, SEQ);
+            OutputWatch output = new OutputWatch(cluster);
             Thread writing = daemon(writer, "fdnet-soak-writer");
             Thread watching = daemon(watch, "fdnet-soak-watch");
+            daemon(output, "fdnet-soak-output");
             long t0 = System.currentTimeMillis();
             out.printf("all processes ready; writing %s every %d ms%n", SequenceWriter.NODE, VALUE_PERIOD_MILLIS);
             out.flush();
             List<InjectedFault> injected = new ArrayList<>();
             for (FaultPlan.Planned f : plan.faults()) {
                 sleepUntil(t0 + f.atMillis());
-                InjectedFault done = new FaultInjector(cluster, linkSwitch, HOSTS).inject(f);
+                InjectedFault done = new FaultInjector(cluster, linkSwitch, HOSTS, rig).inject(f);
                 injected.add(done);
-                out.printf("[%6.1fs] %-15s %-14s over after %,6d ms%n", (done.atMillis() - t0) / 1e3, f.kind(), f.target(),
+                out.printf("[%6.1fs] %-16s %-14s over after %,6d ms%n", (done.atMillis() - t0) / 1e3, f.kind(), f.target(),
                         done.overMillis() - done.atMillis());
                 out.flush();
             }
@@ -116,13 +153,15 @@ public final class SoakCommand implements Callable<Integer> {
             }
             watch.stop();
             watching.join(10_000);
+            output.stop();
             List<InjectedFault> healed = new ArrayList<>();
             for (InjectedFault f : injected) {
                 long value = writer.firstAcknowledgedFrom(f.atMillis());
                 long storedAt = value < 0 ? -1 : watch.firstStored(value, f.atMillis());
                 healed.add(f.healed(storedAt < 0 ? -1 : storedAt - f.atMillis()));
             }
-            result = report(out, t0, healed, acked, writer, watch, database);
+            result = report(out, t0, healed, acked, writer, watch, database, plan,
+                    new NetworkFaultCheck(output, database));
         }
         if (result == 0 && temporary) {
             deleteTree(work); // a passed soak's database is of no further use; a failed one's is kept to look into
@@ -139,7 +178,8 @@ public final class SoakCommand implements Callable<Integer> {
     }
 
     private int report(PrintWriter out, long t0, List<InjectedFault> faults, List<SequenceWriter.Acknowledged> acked,
-                       SequenceWriter writer, DeliveryWatch watch, SoakDatabase database) throws SQLException {
+                       SequenceWriter writer, DeliveryWatch watch, SoakDatabase database, FaultPlan plan,
+                       NetworkFaultCheck check) throws SQLException {
         out.println();
         out.println("faults (healed: from the injection until a value acknowledged after it was stored end to end —"
                 + " Seq applied on the flyer, across the link to the crawler's Relay, its Echo stored by the crawler):");
@@ -148,10 +188,11 @@ public final class SoakCommand implements Callable<Integer> {
         for (InjectedFault f : faults) {
             kinds.add(f.kind());
             allHealed &= f.healedMillis() >= 0;
-            out.printf("  [%6.1fs] %-15s %-14s outage %,7d ms   healed %s%n", (f.atMillis() - t0) / 1e3, f.kind(),
+            out.printf("  [%6.1fs] %-16s %-14s outage %,7d ms   healed %s%n", (f.atMillis() - t0) / 1e3, f.kind(),
                     f.target(), f.overMillis() - f.atMillis(),
                     f.healedMillis() < 0 ? "NEVER" : String.format("in %,7d ms", f.healedMillis()));
         }
+        boolean boundsHeld = NetworkFaultReport.print(out, t0, faults, check);
         List<SequenceCount> counts = List.of(
                 SequenceCount.of(SEQ.toString(), database.copiesByValue(SEQ), acked, faults, COPIES, true),
                 SequenceCount.of(ECHO.toString(), database.copiesByValue(ECHO), acked, faults, COPIES, false));
@@ -172,12 +213,16 @@ public final class SoakCommand implements Callable<Integer> {
         out.printf("values written %d: acknowledged %d, refused %d (their host was down), unanswered %d%n",
                 acked.size() + writer.refused() + writer.unanswered(), acked.size(), writer.refused(), writer.unanswered());
         out.printf("committed Seq rows that later vanished: %d%n", watch.rowsLost());
-        Set<FaultKind> missing = EnumSet.complementOf(EnumSet.copyOf(kinds));
-        boolean pass = unexplained == 0 && watch.rowsLost() == 0 && allHealed && missing.isEmpty() && !acked.isEmpty();
+        Set<FaultKind> missing = EnumSet.noneOf(FaultKind.class);
+        plan.faults().forEach(p -> missing.add(p.kind()));
+        missing.removeAll(kinds);
+        boolean pass = unexplained == 0 && watch.rowsLost() == 0 && allHealed && missing.isEmpty() && !acked.isEmpty()
+                && boundsHeld;
         out.println(pass ? "PASSED: no acknowledged value lost or stored twice outside a host's kill -9; every fault healed"
                 : "FAILED:" + (unexplained > 0 ? " " + unexplained + " unexplained anomalies;" : "")
                 + (watch.rowsLost() > 0 ? " committed rows vanished;" : "") + (allHealed ? "" : " a fault never healed;")
-                + (missing.isEmpty() ? "" : " not injected: " + missing + ";") + (acked.isEmpty() ? " nothing acknowledged;" : ""));
+                + (missing.isEmpty() ? "" : " not injected: " + missing + ";") + (acked.isEmpty() ? " nothing acknowledged;" : "")
+                + (boundsHeld ? "" : " a network fault's bound was exceeded;"));
         out.flush();
         return pass ? 0 : 1;
     }

@@ -21,6 +21,10 @@ final class SoakDatabase {
     private static final String ROWS = "SELECT count(*) FROM datavalue_log d JOIN fdnet_node n"
             + " ON n.sourceid = d.sourceid WHERE n.module = ? AND n.node = ? AND d.time >= ? AND d.time <= ?";
 
+    private static final String LONGEST_GAP = "SELECT max(gap) FROM (SELECT d.time - lag(d.time) OVER (ORDER BY d.time)"
+            + " AS gap FROM datavalue_log d JOIN fdnet_node n ON n.sourceid = d.sourceid WHERE n.module = ? AND n.node = ?"
+            + " AND d.time >= ? AND d.time <= ?) g";
+
     private final DatabaseTarget target;
     private final long fromMicros;
 
@@ -46,6 +50,21 @@ final class SoakDatabase {
              ResultSet rs = s.executeQuery()) {
             rs.next();
             return rs.getLong(1);
+        }
+    }
+
+    /** The longest time between two consecutive rows of {@code node} from {@code fromMillis} to {@code toMillis}; -1 if none. */
+    long longestGapMillis(NodeRef node, long fromMillis, long toMillis) throws SQLException {
+        try (Connection c = open(); PreparedStatement s = c.prepareStatement(LONGEST_GAP)) {
+            s.setString(1, node.module());
+            s.setString(2, node.node());
+            s.setLong(3, fromMillis * 1_000);
+            s.setLong(4, toMillis * 1_000);
+            try (ResultSet rs = s.executeQuery()) {
+                rs.next();
+                long gap = rs.getLong(1);
+                return rs.wasNull() ? -1 : gap / 1_000;
+            }
         }
     }
 

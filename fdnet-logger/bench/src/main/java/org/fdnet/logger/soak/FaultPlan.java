@@ -2,7 +2,11 @@ package org.fdnet.logger.soak;
 
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.Collections;
+import java.util.IdentityHashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * When each fault happens, in cycles. The plain soak's cycle holds one fault of every process kind per minute (the
@@ -11,16 +15,16 @@ import java.util.List;
  * <pre>
  *   network (60 s): crawler/flyer black-holed 5 s, logger black-holed 8 s, naming black-holed 8 s,
  *                   a host throttled to 1 Mbit/s 8 s, 5 % loss on every link 10 s
- *   plain (60 s) ─ a host black-holed 30 s (60 s) ─ plain ─ 5 % loss on every link 60 s (75 s) ─ plain
- *   ─ a host black-holed 120 s (180 s) ─ plain ─ then again from the start
+ *   plain (60 s) ─ partition30 (60 s): a host black-holed 30 s ─ plain ─ loss (75 s): 5 % loss on every link 60 s
+ *   ─ plain ─ partition120 (180 s): a host black-holed 120 s ─ plain ─ then again from the start
  * </pre>
- * A cycle is planned only when it fits in the run, so {@code --apart --for 60s} is one network cycle.
+ * {@code --cycles} names another order. A cycle is planned only when it fits in the run, so {@code --apart --for 60s}
+ * is one network cycle.
  *
  * @param faults the faults in time order, {@code atMillis} after the soak's start
  */
 record FaultPlan(List<Planned> faults) {
     static final long MIN_MILLIS = 45_000;
-    static final long APART_MIN_MILLIS = 60_000;
     static final long DATABASE_OUTAGE_MILLIS = 10_000;
     static final double LINK_DROP = 0.2;
     static final int LINK_DELAY_MILLIS = 20;
@@ -96,8 +100,22 @@ record FaultPlan(List<Planned> faults) {
         }
     };
 
-    private static final List<Cycle> APART_ORDER = List.of(NETWORK, PLAIN, partition(30_000, 60_000), PLAIN,
-            LOSS_MINUTE, PLAIN, partition(120_000, 180_000), PLAIN);
+    /** The cycles {@code --cycles} may name. */
+    static final Map<String, Cycle> CYCLES = cycles();
+
+    /** The order of {@code --apart}'s cycles unless {@code --cycles} gives another. */
+    static final List<String> APART_ORDER = List.of("network", "plain", "partition30", "plain", "loss", "plain",
+            "partition120", "plain");
+
+    private static Map<String, Cycle> cycles() {
+        Map<String, Cycle> c = new LinkedHashMap<>();
+        c.put("network", NETWORK);
+        c.put("plain", PLAIN);
+        c.put("partition30", partition(30_000, 60_000));
+        c.put("loss", LOSS_MINUTE);
+        c.put("partition120", partition(120_000, 180_000));
+        return Collections.unmodifiableMap(c);
+    }
 
     /**
      * @throws IllegalArgumentException when {@code duration} is too short for every kind
@@ -118,21 +136,32 @@ record FaultPlan(List<Planned> faults) {
     }
 
     /**
-     * The plan of {@code fdnet soak --apart}: network cycles and plain ones, in {@link #APART_ORDER}, while they fit.
+     * The plan of {@code fdnet soak --apart}: the cycles named in {@code order} ({@link #CYCLES}), again and again,
+     * while they fit.
      *
-     * @throws IllegalArgumentException when {@code duration} is shorter than one network cycle
+     * @throws IllegalArgumentException when {@code duration} is shorter than the first cycle, or a name is unknown
      */
-    static FaultPlan apart(Duration duration) {
+    static FaultPlan apart(Duration duration, List<String> order) {
         long total = duration.toMillis();
-        if (total < APART_MIN_MILLIS) {
-            throw new IllegalArgumentException("--for must be at least " + APART_MIN_MILLIS / 1000 + "s with --apart to"
-                    + " fit every network fault kind with time to heal, was " + duration.toSeconds() + "s");
+        if (order.isEmpty()) {
+            throw new IllegalArgumentException("--cycles names no cycle; known: " + String.join(", ", CYCLES.keySet()));
+        }
+        for (String name : order) {
+            if (!CYCLES.containsKey(name)) {
+                throw new IllegalArgumentException("--cycles: no cycle '" + name + "'; known: "
+                        + String.join(", ", CYCLES.keySet()));
+            }
+        }
+        long needed = order.get(0).equals("plain") ? MIN_MILLIS : CYCLES.get(order.get(0)).length(total);
+        if (total < needed) {
+            throw new IllegalArgumentException("--for must be at least " + needed / 1000 + "s to fit the " + order.get(0)
+                    + " cycle with time to heal, was " + duration.toSeconds() + "s");
         }
         List<Planned> faults = new ArrayList<>();
-        java.util.Map<Cycle, Integer> seen = new java.util.IdentityHashMap<>();
+        Map<Cycle, Integer> seen = new IdentityHashMap<>();
         long start = 0;
         for (int i = 0; ; i++) {
-            Cycle c = APART_ORDER.get(i % APART_ORDER.size());
+            Cycle c = CYCLES.get(order.get(i % order.size()));
             long length = c.length(total);
             if (start + length > total) {
                 break;

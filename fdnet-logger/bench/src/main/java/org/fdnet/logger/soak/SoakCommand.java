@@ -67,6 +67,13 @@ public final class SoakCommand implements Callable<Integer> {
             + " soak; needs root) and add the network faults: black holes, loss, a throttled link")
     boolean apart;
 
+    @Option(names = "--cycles", split = ",", paramLabel = "CYCLE",
+            description = "with --apart: the cycles to repeat, in order, from network (60 s: every network fault kind,"
+                    + " short), plain (60 s: the process faults), partition30 (60 s: a host black-holed 30 s), loss"
+                    + " (75 s: 5 %% loss on every link for 60 s), partition120 (180 s: a host black-holed 120 s)"
+                    + " (default: network,plain,partition30,plain,loss,plain,partition120,plain)")
+    List<String> cycles;
+
     @Spec
     CommandSpec spec;
 
@@ -78,7 +85,11 @@ public final class SoakCommand implements Callable<Integer> {
         Path network;
         boolean temporary = work == null;
         try {
-            plan = apart ? FaultPlan.apart(duration) : FaultPlan.of(duration);
+            if (cycles != null && !apart) {
+                throw new IllegalArgumentException("--cycles needs --apart");
+            }
+            plan = apart ? FaultPlan.apart(duration, cycles != null ? cycles : FaultPlan.APART_ORDER)
+                    : FaultPlan.of(duration);
             work = work != null ? Files.createDirectories(work) : Files.createTempDirectory("fdnet-soak-");
             network = SoakNetwork.write(twoRobots != null ? twoRobots : defaultTwoRobots(), work);
         } catch (IllegalArgumentException | IOException e) {
@@ -156,9 +167,12 @@ public final class SoakCommand implements Callable<Integer> {
             output.stop();
             List<InjectedFault> healed = new ArrayList<>();
             for (InjectedFault f : injected) {
-                long value = writer.firstAcknowledgedFrom(f.atMillis());
-                long storedAt = value < 0 ? -1 : watch.firstStored(value, f.atMillis());
-                healed.add(f.healed(storedAt < 0 ? -1 : storedAt - f.atMillis()));
+                // a network fault lasts: its heal counts from the lift (links are in order, so the value sent first
+                // after it is stored end to end behind everything that waited through the fault)
+                long from = f.kind().network ? f.overMillis() : f.atMillis();
+                long value = writer.firstAcknowledgedFrom(from);
+                long storedAt = value < 0 ? -1 : watch.firstStored(value, from);
+                healed.add(f.healed(storedAt < 0 ? -1 : storedAt - from));
             }
             result = report(out, t0, healed, acked, writer, watch, database, plan,
                     new NetworkFaultCheck(output, database));
@@ -181,8 +195,9 @@ public final class SoakCommand implements Callable<Integer> {
                        SequenceWriter writer, DeliveryWatch watch, SoakDatabase database, FaultPlan plan,
                        NetworkFaultCheck check) throws SQLException {
         out.println();
-        out.println("faults (healed: from the injection until a value acknowledged after it was stored end to end —"
-                + " Seq applied on the flyer, across the link to the crawler's Relay, its Echo stored by the crawler):");
+        out.println("faults (healed: from the injection — for a network fault, from its lift — until a value acknowledged"
+                + " after it was stored end to end: Seq applied on the flyer, across the link to the crawler's Relay, its"
+                + " Echo stored by the crawler):");
         Set<FaultKind> kinds = EnumSet.noneOf(FaultKind.class);
         boolean allHealed = true;
         for (InjectedFault f : faults) {

@@ -17,9 +17,9 @@ import org.fdnet.tls.TransportSecurity;
  * all by {@code callTimeoutMillis}: a connect gives up after {@link #connectTimeoutMillis()}; a call waits for its
  * reply at most {@code callTimeoutMillis} ({@code TIMEOUT}); and a client connection on which nothing at all was
  * received for {@code callTimeoutMillis} is closed even with replies pending (they fail with {@code COMM_FAILURE}),
- * so the next call opens a new connection. Without the last, JacORB keeps the dead TCP connection: every later
- * call queues behind segments the kernel retransmits with exponential back-off (up to 2 minutes between tries),
- * and a peer back after a 30 s outage is heard again only a minute later.
+ * so the next call opens a new connection. Without the last, JacORB may keep the dead TCP connection: later calls
+ * queue behind segments the kernel retransmits with exponential back-off (up to 2 minutes between tries), and a
+ * link whose peer was cut off for 2 minutes carried values again only a minute and a half after the cable was back.
  *
  * @param bindAddress     the address the ORB listens on and writes into its object references
  * @param port            the listening port; 0 picks a free one

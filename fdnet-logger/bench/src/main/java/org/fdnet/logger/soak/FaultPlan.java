@@ -30,75 +30,47 @@ record FaultPlan(List<Planned> faults) {
     static final int LINK_DELAY_MILLIS = 20;
     static final int LOSS_PERCENT = 5;
     static final int THROTTLE_KBIT_PER_SECOND = 1000;
+    private static final String EVERY_HOST = "every host";
 
     /** One fault of the plan; {@code target} names the host for a host kill, partition or throttle. */
     record Planned(FaultKind kind, long atMillis, long lengthMillis, String target) {
     }
 
-    /** A cycle: its length and its faults' offsets within it; {@code n} counts cycles of its kind (alternates hosts). */
-    private interface Cycle {
-        long length(long total);
-
-        void plan(long start, long length, int n, List<Planned> into);
+    /** Plans one cycle's faults from {@code start}; {@code n} counts cycles of its kind (to alternate hosts). */
+    private interface Planner {
+        void plan(long start, long cycle, int n, List<Planned> into);
     }
 
-    private static final Cycle PLAIN = new Cycle() {
-        @Override
-        public long length(long total) {
-            return Math.min(60_000, total);
+    /** A cycle: {@code fixedMillis} long (0: a minute, or the whole run when shorter) and what it injects. */
+    private record Cycle(long fixedMillis, Planner planner) {
+        long length(long total) {
+            return fixedMillis > 0 ? fixedMillis : Math.min(60_000, total);
         }
+    }
 
-        @Override
-        public void plan(long start, long cycle, int n, List<Planned> faults) {
-            faults.add(new Planned(FaultKind.LINK_FAULTS, start + linkFrom(cycle), linkLength(cycle), "flyer, crawler"));
-            faults.add(new Planned(FaultKind.HOST_KILL, start + cycle * 25 / 100, 0, host(n)));
-            faults.add(new Planned(FaultKind.LOGGER_KILL, start + cycle * 42 / 100, 0, "logger"));
-            faults.add(new Planned(FaultKind.DATABASE_STOP, start + cycle * 56 / 100, DATABASE_OUTAGE_MILLIS, "PostgreSQL"));
-            faults.add(new Planned(FaultKind.NAMING_RESTART, start + cycle * 82 / 100, 0, "naming"));
-        }
-    };
+    private static final Cycle PLAIN = new Cycle(0, (start, cycle, n, faults) -> {
+        faults.add(new Planned(FaultKind.LINK_FAULTS, start + linkFrom(cycle), linkLength(cycle), "flyer, crawler"));
+        faults.add(new Planned(FaultKind.HOST_KILL, start + cycle * 25 / 100, 0, host(n)));
+        faults.add(new Planned(FaultKind.LOGGER_KILL, start + cycle * 42 / 100, 0, "logger"));
+        faults.add(new Planned(FaultKind.DATABASE_STOP, start + cycle * 56 / 100, DATABASE_OUTAGE_MILLIS, "PostgreSQL"));
+        faults.add(new Planned(FaultKind.NAMING_RESTART, start + cycle * 82 / 100, 0, "naming"));
+    });
 
-    private static final Cycle NETWORK = new Cycle() {
-        @Override
-        public long length(long total) {
-            return 60_000;
-        }
-
-        @Override
-        public void plan(long start, long cycle, int n, List<Planned> faults) {
-            faults.add(new Planned(FaultKind.HOST_PARTITION, start + 2_000, 5_000, host(n)));
-            faults.add(new Planned(FaultKind.LOGGER_PARTITION, start + 13_000, 8_000, "logger"));
-            faults.add(new Planned(FaultKind.NAMING_PARTITION, start + 25_000, 8_000, "naming"));
-            faults.add(new Planned(FaultKind.THROTTLE, start + 37_000, 8_000, host(n + 1)));
-            faults.add(new Planned(FaultKind.LOSS, start + 47_000, 10_000, "every host"));
-        }
-    };
+    private static final Cycle NETWORK = new Cycle(60_000, (start, cycle, n, faults) -> {
+        faults.add(new Planned(FaultKind.HOST_PARTITION, start + 2_000, 5_000, host(n)));
+        faults.add(new Planned(FaultKind.LOGGER_PARTITION, start + 13_000, 8_000, "logger"));
+        faults.add(new Planned(FaultKind.NAMING_PARTITION, start + 25_000, 8_000, "naming"));
+        faults.add(new Planned(FaultKind.THROTTLE, start + 37_000, 8_000, host(n + 1)));
+        faults.add(new Planned(FaultKind.LOSS, start + 47_000, 10_000, EVERY_HOST));
+    });
 
     private static Cycle partition(long outageMillis, long cycleMillis) {
-        return new Cycle() {
-            @Override
-            public long length(long total) {
-                return cycleMillis;
-            }
-
-            @Override
-            public void plan(long start, long cycle, int n, List<Planned> faults) {
-                faults.add(new Planned(FaultKind.HOST_PARTITION, start + 2_000, outageMillis, host(n + 1)));
-            }
-        };
+        return new Cycle(cycleMillis, (start, cycle, n, faults) ->
+                faults.add(new Planned(FaultKind.HOST_PARTITION, start + 2_000, outageMillis, host(n + 1))));
     }
 
-    private static final Cycle LOSS_MINUTE = new Cycle() {
-        @Override
-        public long length(long total) {
-            return 75_000;
-        }
-
-        @Override
-        public void plan(long start, long cycle, int n, List<Planned> faults) {
-            faults.add(new Planned(FaultKind.LOSS, start + 2_000, 60_000, "every host"));
-        }
-    };
+    private static final Cycle LOSS_MINUTE = new Cycle(75_000, (start, cycle, n, faults) ->
+            faults.add(new Planned(FaultKind.LOSS, start + 2_000, 60_000, EVERY_HOST)));
 
     /** The cycles {@code --cycles} may name. */
     static final Map<String, Cycle> CYCLES = cycles();
@@ -130,7 +102,7 @@ record FaultPlan(List<Planned> faults) {
         long cycle = PLAIN.length(total);
         int n = 0;
         for (long start = 0; start + cycle <= total; start += cycle, n++) {
-            PLAIN.plan(start, cycle, n, faults);
+            PLAIN.planner().plan(start, cycle, n, faults);
         }
         return new FaultPlan(List.copyOf(faults));
     }
@@ -167,7 +139,7 @@ record FaultPlan(List<Planned> faults) {
                 break;
             }
             int n = seen.merge(c, 1, Integer::sum) - 1;
-            c.plan(start, length, n, faults);
+            c.planner().plan(start, length, n, faults);
             start += length;
         }
         return new FaultPlan(List.copyOf(faults));

@@ -20,6 +20,8 @@ import org.fdnet.netinfo.NodeRef;
  *       {@link #LOGGER_DETECTION_MILLIS};</li>
  *   <li><b>re-wired</b> — after the heal, the run's {@code host H is back}, or every host's logger connected again:
  *       within {@link #HOST_REWIRE_MILLIS} and {@link #LOGGER_REWIRE_MILLIS};</li>
+ *   <li><b>healed</b> — from the lift until a value acknowledged after it is stored end to end: within
+ *       {@link #HEAL_MILLIS};</li>
  *   <li><b>longest call</b> — the longest {@code deliver} call of any host's link while the fault lasted (and its
  *       settling time after): a link's caller is blocked at most the ORB's call timeout ({@link #CALL_MILLIS});</li>
  *   <li><b>Relation stall</b> — the longest gap between two values of {@code main/Map}, which {@code Survey} writes
@@ -39,6 +41,11 @@ final class NetworkFaultCheck {
     static final long LOGGER_DETECTION_MILLIS = CLIENT.silenceTimeout().toMillis() + SLACK_MILLIS;
     /** A connect begun during the partition runs out first, then the client waits its reconnect delay. */
     static final long LOGGER_REWIRE_MILLIS = 5_000 + CLIENT.reconnectDelay().toMillis() + SLACK_MILLIS;
+    /**
+     * From a network fault's lift until a value sent after it is stored end to end: the slower re-wiring (the logger's)
+     * plus the logger's commit and the soak's poll of the database.
+     */
+    static final long HEAL_MILLIS = LOGGER_REWIRE_MILLIS + 5_000;
     static final long SURVEY_PERIOD_MILLIS = 100;
     static final long STALL_MILLIS = SURVEY_PERIOD_MILLIS + OutboundLink.MAX_WRITER_WAIT_MILLIS + SLACK_MILLIS;
     static final long LINK_VALUES = LinkSettings.defaults().capacity();

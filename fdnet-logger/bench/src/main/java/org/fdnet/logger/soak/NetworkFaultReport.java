@@ -23,17 +23,20 @@ final class NetworkFaultReport {
         out.println();
         out.printf("network faults (detected: after the injection, the run reporting the host LOST [<= %,d ms] or a"
                         + " host's logger away [<= %,d ms]; re-wired: after the heal, the run's \"host H is back\""
-                        + " [<= %,d ms] or every host's logger connected [<= %,d ms]; longest link call [<= %,d ms];"
+                        + " [<= %,d ms] or every host's logger connected [<= %,d ms]; healed: from the lift [<= %,d ms];"
+                        + " longest link call [<= %,d ms];"
                         + " Relation stall: longest gap between Survey's values on the flyer [<= %,d ms]; held at most:"
                         + " link values waiting [<= %,d per link], logger events in memory [<= %,d], in the journal):%n",
                 NetworkFaultCheck.HOST_DETECTION_MILLIS, NetworkFaultCheck.LOGGER_DETECTION_MILLIS,
-                NetworkFaultCheck.HOST_REWIRE_MILLIS, NetworkFaultCheck.LOGGER_REWIRE_MILLIS, NetworkFaultCheck.CALL_MILLIS,
+                NetworkFaultCheck.HOST_REWIRE_MILLIS, NetworkFaultCheck.LOGGER_REWIRE_MILLIS, NetworkFaultCheck.HEAL_MILLIS,
+                NetworkFaultCheck.CALL_MILLIS,
                 NetworkFaultCheck.STALL_MILLIS, NetworkFaultCheck.LINK_VALUES, NetworkFaultCheck.CLIENT_EVENTS);
         boolean held = true;
         Map<FaultKind, long[]> perKind = new EnumMap<>(FaultKind.class); // injected, detected, re-wired, healed (max)
         for (InjectedFault f : network) {
             NetworkFaultCheck.Measured m = check.measure(f);
-            boolean ok = m.boundsHeld(f.kind()) && f.healedMillis() >= 0;
+            boolean ok = m.boundsHeld(f.kind()) && f.healedMillis() >= 0
+                    && f.healedMillis() <= NetworkFaultCheck.HEAL_MILLIS;
             held &= ok;
             out.printf("  [%6.1fs] %-16s %-10s %4d s  detected %s  re-wired %s  healed %s  call %,6d ms  stall %,6d ms"
                             + "  held %,d values, %,d events, journal %,d; dropped %d values, %d events  %s%n",

@@ -33,7 +33,7 @@ import picocli.CommandLine.Spec;
                 + " duplicates and gaps, and the time each fault took to heal.",
                 "With --apart every process runs on a host of its own (a network namespace with its own address; root"
                         + " only) and network faults come in cycles of their own: a host's link black-holed for 5 s, 30 s"
-                        + " and 120 s, the logger's and the naming service's black-holed, 5 % loss on every link, a link"
+                        + " and 120 s, the logger's and the naming service's black-holed, 5 %% loss on every link, a link"
                         + " throttled to 1 Mbit/s; each is checked against the time bounds of detection, re-wiring, the"
                         + " longest call and a Relation's stall.",
                 "Exit 0 when no acknowledged value was lost, 1 otherwise."})

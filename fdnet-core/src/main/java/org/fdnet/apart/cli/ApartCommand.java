@@ -6,13 +6,14 @@ import picocli.CommandLine.Spec;
 
 /** {@code fdnet apart}: hosts on addresses of their own, on one machine, for trying a network across them by hand. */
 @Command(name = "apart", mixinStandardHelpOptions = true,
-        description = {"Put hosts on addresses of their own on this machine (a network namespace each, joined on a"
+        description = "Put hosts on addresses of their own on this machine (a network namespace each, joined on a"
                 + " bridge; root only), run FDNet processes on them and put faults on their links: a silent"
                 + " partition, random loss, a slow link.",
-                "  fdnet apart up --hosts naming,flyer,crawler      (stays up; Ctrl-C removes everything)",
-                "  fdnet apart exec flyer -- bin/fdnet host --name flyer --bind 10.231.1.2 …",
-                "  fdnet apart fault flyer blackhole | heal | loss 5 | throttle 1000 | clear",
-                "  fdnet apart status | down | sweep"},
+        footer = {"", "Example:",
+                "  fdnet apart up --hosts naming,flyer,crawler     (Ctrl-C removes it all)",
+                "  fdnet apart exec flyer -- bin/fdnet host --name flyer --bind ADDRESS …",
+                "  fdnet apart fault flyer blackhole             (then: heal)",
+                "  fdnet apart status"},
         subcommands = {ApartUpCommand.class, ApartExecCommand.class, ApartFaultCommand.class, ApartStatusCommand.class,
                 ApartDownCommand.class, ApartSweepCommand.class})
 public final class ApartCommand implements Runnable {

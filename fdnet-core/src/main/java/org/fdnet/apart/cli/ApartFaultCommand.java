@@ -1,12 +1,8 @@
 package org.fdnet.apart.cli;
 
-import java.util.concurrent.Callable;
 import org.fdnet.apart.ApartRig;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 
 /** {@code fdnet apart fault}: puts a fault on a host's link, or lifts it. */
 @Command(name = "fault", mixinStandardHelpOptions = true,
@@ -16,7 +12,7 @@ import picocli.CommandLine.Spec;
                 "  loss PERCENT     drop each packet in or out with this probability (0 lifts it)",
                 "  throttle KBIT    limit the link to KBIT kbit/s each way",
                 "  clear            lift every fault"})
-public final class ApartFaultCommand implements Callable<Integer> {
+public final class ApartFaultCommand extends OnTheRigThatIsUp {
     @Parameters(index = "0", paramLabel = "HOST", description = "the host whose link")
     String host;
 
@@ -26,23 +22,10 @@ public final class ApartFaultCommand implements Callable<Integer> {
     @Parameters(index = "2", arity = "0..1", paramLabel = "VALUE", description = "loss's PERCENT, throttle's KBIT")
     Integer value;
 
-    @Mixin
-    RigNameOption rigName;
-
-    @Spec
-    CommandSpec spec;
-
     @Override
-    public Integer call() {
-        try {
-            ApartRig rig = rigName.running();
-            String done = apply(rig);
-            System.out.println("ok: " + host + " " + done);
-            return 0;
-        } catch (IllegalArgumentException | IllegalStateException e) {
-            spec.commandLine().getErr().println("fdnet apart fault " + host + " " + fault + ": " + e.getMessage());
-            return 1;
-        }
+    int on(ApartRig rig) {
+        System.out.println("ok: " + host + " " + apply(rig));
+        return 0;
     }
 
     private String apply(ApartRig rig) {
@@ -67,7 +50,7 @@ public final class ApartFaultCommand implements Callable<Integer> {
                 rig.clear(host);
                 return "cleared: no fault on its link";
             }
-            default -> throw new IllegalArgumentException("unknown fault; give blackhole, heal, loss PERCENT,"
+            default -> throw new IllegalArgumentException("unknown fault '" + fault + "'; give blackhole, heal, loss PERCENT,"
                     + " throttle KBIT or clear");
         }
     }

@@ -134,6 +134,8 @@ class ApartTlsRunTest {
                 assertThat(rowsOf(target, m.group(3))).as("rows of host %s", m.group(1))
                         .isEqualTo(Long.parseLong(m.group(2).replace(",", ""))).isPositive();
             }
+            assertThat(number(target, "SELECT count(*) FROM fdnet_run")).as("the three hosts' streams and nothing from"
+                    + " the clients that were refused").isEqualTo(3);
             assertThat(valuesOf(target, "flyer", "Map")).isGreaterThan(5);
             assertThat(valuesOf(target, "crawler", "Heading")).isGreaterThan(5);
             assertThat(valuesOf(target, "crawler", "Certainty")).isGreaterThan(5);

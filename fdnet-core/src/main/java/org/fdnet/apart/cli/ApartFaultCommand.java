@@ -6,14 +6,15 @@ import picocli.CommandLine.Parameters;
 
 /** {@code fdnet apart fault}: puts a fault on a host's link, or lifts it. */
 @Command(name = "fault", mixinStandardHelpOptions = true,
-        description = {"Put a fault on HOST's link, or lift it:",
+        description = "Put a fault on HOST's link, or lift it: blackhole, heal, loss PERCENT, throttle KBIT, clear.",
+        footer = {"", "Faults:",
                 "  blackhole        drop every packet in and out, silently (no reset): a pulled cable",
                 "  heal             lift blackhole",
                 "  loss PERCENT     drop each packet in or out with this probability (0 lifts it)",
                 "  throttle KBIT    limit the link to KBIT kbit/s each way",
                 "  clear            lift every fault"})
 public final class ApartFaultCommand extends OnTheRigThatIsUp {
-    @Parameters(index = "0", paramLabel = "HOST", description = "the host whose link")
+    @Parameters(index = "0", paramLabel = "HOST", description = "the host whose link gets the fault")
     String host;
 
     @Parameters(index = "1", paramLabel = "FAULT", description = "blackhole, heal, loss, throttle or clear")

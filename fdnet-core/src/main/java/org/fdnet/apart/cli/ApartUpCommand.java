@@ -15,7 +15,7 @@ import picocli.CommandLine.Spec;
         description = "Make a rig with these hosts, print each one's address and how to run on it, and keep it until"
                 + " Ctrl-C (or fdnet apart down), which removes everything it made and ends what runs on its hosts.")
 public final class ApartUpCommand implements Callable<Integer> {
-    @Option(names = "--hosts", required = true, split = ",", paramLabel = "HOST[,HOST…]",
+    @Option(names = "--hosts", required = true, split = ",", paramLabel = "HOST",
             description = "the hosts, e.g. naming,flyer,crawler,logger,viewer: each gets a namespace and an address")
     List<String> hosts;
 

@@ -15,6 +15,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.TreeMap;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -59,11 +60,14 @@ public final class ApartRig implements AutoCloseable {
     private final Map<String, InetAddress> addresses = new LinkedHashMap<>();
     private final List<String> made = new ArrayList<>();
     private final Thread shutdownHook;
+    /** Whether this object made the rig (and removes it), or found one another process made ({@link #find}). */
+    private final boolean owner;
     private boolean closed;
 
-    private ApartRig(RigNames names, int subnet) {
+    private ApartRig(RigNames names, int subnet, boolean owner) {
         this.names = names;
         this.subnet = subnet;
+        this.owner = owner;
         this.shutdownHook = new Thread(this::closeQuietly, "apart-rig-cleanup-" + names.rigNamespace());
     }
 
@@ -96,7 +100,7 @@ public final class ApartRig implements AutoCloseable {
         synchronized (CHOICE_LOCK_IN_THIS_JVM) {
             try (FileChannel lockFile = FileChannel.open(CHOICE_LOCK, StandardOpenOption.CREATE, StandardOpenOption.WRITE);
                  FileLock ignored = lockFile.lock()) {
-                ApartRig rig = new ApartRig(names, freeSubnet());
+                ApartRig rig = new ApartRig(names, freeSubnet(), true);
                 Runtime.getRuntime().addShutdownHook(rig.shutdownHook);
                 try {
                     rig.build(hostNames);
@@ -142,6 +146,72 @@ public final class ApartRig implements AutoCloseable {
             LOG.info("apart rig sweep removed {}", removed);
         }
         return removed;
+    }
+
+    /**
+     * The rig with {@code prefix} that a live process made, to run commands on its hosts and put faults on their links
+     * from another process ({@code fdnet apart exec}, {@code fdnet apart fault}). Closing what this returns removes
+     * nothing: the rig stays its maker's.
+     *
+     * @return the rig; empty when no live process has one with this prefix
+     * @throws IllegalStateException when several live processes have one (each is named)
+     */
+    public static Optional<ApartRig> find(String prefix) {
+        RigNames.requirePrefix(prefix);
+        Map<Long, List<String>> byOwner = new LinkedHashMap<>();
+        for (String ns : namespaces()) {
+            RigNames.ownerOf(prefix, ns)
+                    .filter(pid -> ProcessHandle.of(pid).map(ProcessHandle::isAlive).orElse(false))
+                    .ifPresent(pid -> byOwner.computeIfAbsent(pid, p -> new ArrayList<>()).add(ns));
+        }
+        if (byOwner.isEmpty()) {
+            return Optional.empty();
+        }
+        if (byOwner.size() > 1) {
+            throw new IllegalStateException("several rigs named " + prefix + " are up, made by processes "
+                    + byOwner.keySet() + ": stop all but one");
+        }
+        long pid = byOwner.keySet().iterator().next();
+        RigNames names = new RigNames(prefix, pid);
+        Map<Integer, String> hostsByIndex = new TreeMap<>();
+        Map<String, InetAddress> found = new LinkedHashMap<>();
+        for (String ns : byOwner.get(pid)) {
+            if (ns.equals(names.rigNamespace())) {
+                continue;
+            }
+            String host = ns.substring(names.rigNamespace().length() + 1);
+            InetAddress address = addressIn(ns);
+            hostsByIndex.put((address.getAddress()[3] & 0xff) - 1, host);
+            found.put(host, address);
+        }
+        int subnet = found.isEmpty() ? 0 : found.values().iterator().next().getAddress()[2] & 0xff;
+        ApartRig rig = new ApartRig(names, subnet, false);
+        hostsByIndex.forEach((index, host) -> {
+            rig.links.put(host, new HostLink(names.rigNamespace(), "v" + index, names.hostNamespace(host)));
+            rig.addresses.put(host, found.get(host));
+        });
+        return Optional.of(rig);
+    }
+
+    /** The address a rig gave the host whose namespace is {@code ns}. */
+    private static InetAddress addressIn(String ns) {
+        String shown = SystemCommand.run(SystemCommand.tool("ip"), "-n", ns, "-o", "-4", "addr", "show", "dev",
+                HostLink.HOST_DEVICE);
+        Matcher m = Pattern.compile("inet ([0-9.]+)/").matcher(shown);
+        if (!m.find()) {
+            throw new IllegalStateException("namespace " + ns + " has no address on " + HostLink.HOST_DEVICE
+                    + ": it is not a host of a working rig (fdnet apart down removes it)");
+        }
+        try {
+            return InetAddress.getByName(m.group(1));
+        } catch (UnknownHostException e) {
+            throw new IllegalStateException("namespace " + ns + " has address " + m.group(1), e);
+        }
+    }
+
+    /** The process that made this rig and removes it. */
+    public long ownerPid() {
+        return names.pid();
     }
 
     /** The namespaces on this machine, as {@code ip netns list} names them. */
@@ -241,12 +311,16 @@ public final class ApartRig implements AutoCloseable {
     }
 
     /**
-     * Kills what still runs in the rig's namespaces and removes them, with their links, tables and queues.
+     * Kills what still runs in the rig's namespaces and removes them, with their links, tables and queues; does
+     * nothing on a rig another process made ({@link #find}).
      *
      * @throws IllegalStateException naming what could not be removed (everything else is removed all the same)
      */
     @Override
     public void close() {
+        if (!owner) {
+            return;
+        }
         List<String> failures = removeAll();
         try {
             Runtime.getRuntime().removeShutdownHook(shutdownHook);

@@ -1,5 +1,6 @@
 package org.fdnet.apart;
 
+import java.util.ArrayList;
 import java.util.List;
 
 /**
@@ -133,7 +134,7 @@ final class HostLink {
     }
 
     private static void tc(String ns, String verb, String device, List<String> rest) {
-        List<String> argv = new java.util.ArrayList<>(List.of(SystemCommand.tool("ip"), "netns", "exec", ns,
+        List<String> argv = new ArrayList<>(List.of(SystemCommand.tool("ip"), "netns", "exec", ns,
                 SystemCommand.tool("tc"), "qdisc", verb, "dev", device));
         argv.addAll(rest);
         SystemCommand.run(argv, null);

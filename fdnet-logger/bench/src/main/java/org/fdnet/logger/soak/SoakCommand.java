@@ -103,6 +103,9 @@ public final class SoakCommand implements Callable<Integer> {
                 rig = ApartRig.create(RIG_PREFIX, SoakPlacement.PROCESSES);
             } catch (IllegalStateException e) {
                 err.println("fdnet soak --apart: " + e.getMessage());
+                if (temporary) {
+                    deleteTree(work);
+                }
                 return 1;
             }
         }

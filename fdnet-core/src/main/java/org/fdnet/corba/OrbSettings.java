@@ -20,6 +20,10 @@ import org.fdnet.tls.TransportSecurity;
  * so the next call opens a new connection. Without the last, JacORB may keep the dead TCP connection: later calls
  * queue behind segments the kernel retransmits with exponential back-off (up to 2 minutes between tries), and a
  * link whose peer was cut off for 2 minutes carried values again only a minute and a half after the cable was back.
+ * Hazard of the close: a connection idle for almost {@code callTimeoutMillis} that carries a call just then may be
+ * closed under it (the call fails with {@code COMM_FAILURE}, completion unknown), with a chance of about the call's
+ * duration over {@code callTimeoutMillis}; links, pings and the naming watch call at least every second, so their
+ * connections are never idle that long (and a link retries a failed call; a live change fails and says so).
  *
  * @param bindAddress     the address the ORB listens on and writes into its object references
  * @param port            the listening port; 0 picks a free one

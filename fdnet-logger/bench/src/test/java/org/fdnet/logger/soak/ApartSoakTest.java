@@ -22,7 +22,7 @@ import org.junit.jupiter.api.io.TempDir;
  * dropped, and every acknowledged value stored exactly once (the command's own verdict, and its report read here).
  */
 class ApartSoakTest {
-    private static final Pattern FAULT_LINE = Pattern.compile("\\] (\\w+) +(\\S+) +(\\d+) s  detected (\\S+(?: ms)?)"
+    private static final Pattern FAULT_LINE = Pattern.compile("\\] (\\w+) +(.+?) +(\\d+) s  detected (\\S+(?: ms)?)"
             + "  re-wired (\\S+(?: ms)?)  healed (\\S+ ms)  call +([\\d,]+) ms  stall +([\\d,]+) ms  held ([\\d,]+) values,"
             + " ([\\d,]+) events, journal ([\\d,]+); dropped 0 values, 0 events  ok");
 

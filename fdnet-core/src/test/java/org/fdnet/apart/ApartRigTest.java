@@ -7,13 +7,16 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
 
 /** The rig on this machine's kernel: real namespaces, veth pairs, bridge, nftables and TBF (needs root). */
 @Timeout(value = 120, unit = TimeUnit.SECONDS)
@@ -111,6 +114,25 @@ class ApartRigTest {
         assertEquals(List.of(dead + "-b"), ApartRig.sweep(PREFIX));
         assertEquals(2, namespacesOf(rig.rigNamespace()).size(), "the live rig stays");
         assertEquals("connected", connectAfterListening());
+    }
+
+    @Test
+    void shouldRefuseInOneLineSayingWhatRootIsNeededForWhenNotRoot(@TempDir Path dir) throws Exception {
+        // The probe runs as nobody, who cannot read the local Maven repository: its one library is copied.
+        Path slf4j = Path.of(List.of(System.getProperty("java.class.path").split(":")).stream()
+                .filter(p -> p.contains("slf4j-api")).findFirst().orElseThrow());
+        Files.copy(slf4j, dir.resolve("slf4j-api.jar"));
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwxr-xr-x"));
+        Files.setPosixFilePermissions(dir.resolve("slf4j-api.jar"), PosixFilePermissions.fromString("rw-r--r--"));
+        String classPath = String.join(":", Path.of("target", "classes").toAbsolutePath().toString(),
+                Path.of("target", "test-classes").toAbsolutePath().toString(), dir.resolve("slf4j-api.jar").toString());
+        Process p = new ProcessBuilder("setpriv", "--reuid=65534", "--regid=65534", "--clear-groups",
+                Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Dslf4j.internal.verbosity=ERROR",
+                "-cp", classPath, NotRootProbe.class.getName()).redirectError(ProcessBuilder.Redirect.DISCARD).start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        assertEquals(List.of("the apart rig needs root: it makes network namespaces, veth pairs, a bridge and nftables"
+                + " rules to put hosts on addresses of their own (run it as root)"), out.lines().toList());
     }
 
     private String connectAfterListening() throws Exception {

@@ -74,6 +74,19 @@ class ApartRigTest {
     }
 
     @Test
+    void shouldSlowAThrottledLinkToItsRate() throws Exception {
+        rig = ApartRig.create(PREFIX, List.of("a", "b"));
+        listen("a");
+        int bytes = 256 * 1024;
+        long unthrottled = send("b", "a", bytes);
+        rig.throttle("a", 1000);
+        long throttled = send("b", "a", bytes);
+        // 256 KiB at 1 Mbit/s is 2.1 s; the bucket lets its first 16 KiB through at once
+        assertTrue(throttled >= 1800, "256 KiB over a 1 Mbit/s link took " + throttled + " ms");
+        assertTrue(unthrottled < throttled / 4, "unthrottled " + unthrottled + " ms, throttled " + throttled + " ms");
+    }
+
+    @Test
     void shouldRefuseAnUnknownHostAndBadFaultsByName() {
         rig = ApartRig.create(PREFIX, List.of("a"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> rig.blackhole("z")).getMessage()
@@ -152,6 +165,13 @@ class ApartRigTest {
                 Integer.toString(CONNECT_TIMEOUT_MS));
         assertTrue(p.waitFor(60, TimeUnit.SECONDS));
         return new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
+    }
+
+    /** Milliseconds {@code bytes} took from {@code from} to the listener on {@code to}. */
+    private long send(String from, String to, int bytes) throws Exception {
+        Process p = java(from, "send", rig.address(to).getHostAddress(), Integer.toString(PORT), Integer.toString(bytes));
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        return Long.parseLong(new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip());
     }
 
     private Process java(String host, String... args) throws IOException {

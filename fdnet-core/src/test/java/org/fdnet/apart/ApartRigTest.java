@@ -183,7 +183,7 @@ class ApartRigTest {
     }
 
     private static List<String> namespacesOf(String rigNamespace) {
-        return ApartRig.namespaces().stream().filter(n -> n.equals(rigNamespace) || n.startsWith(rigNamespace + "-"))
+        return Namespaces.list().stream().filter(n -> n.equals(rigNamespace) || n.startsWith(rigNamespace + "-"))
                 .toList();
     }
 

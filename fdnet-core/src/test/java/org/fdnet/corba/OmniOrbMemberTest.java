@@ -34,12 +34,7 @@ import org.junit.jupiter.api.Timeout;
  */
 @Timeout(value = 240, unit = TimeUnit.SECONDS)
 class OmniOrbMemberTest {
-    private static final String GRANTS = """
-            *         read     *
-            operator  write    *
-            operator  load     *
-            operator  unload   *
-            operator  reshape  *
+    private static final String GRANTS = PermissionsAcrossProcessesTest.OPERATOR_DOES_EVERYTHING + """
             member    write    main/Certainty
             """;
     private static final NodeRef CERTAINTY = new NodeRef("main", "Certainty");

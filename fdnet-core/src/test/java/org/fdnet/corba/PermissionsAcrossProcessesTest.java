@@ -39,12 +39,15 @@ import org.omg.CORBA.NO_PERMISSION;
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 @Timeout(value = 240, unit = TimeUnit.SECONDS)
 class PermissionsAcrossProcessesTest {
-    private static final String GRANTS = """
+    /** Every member reads everything; the operator's certificate (the run's, the test's own calls) may do anything. */
+    static final String OPERATOR_DOES_EVERYTHING = """
             *         read     *
             operator  write    *
             operator  load     *
             operator  unload   *
             operator  reshape  *
+            """;
+    private static final String GRANTS = OPERATOR_DOES_EVERYTHING + """
             walker    load     Walk
             walker    unload   Walk
             walker    reshape  Walk

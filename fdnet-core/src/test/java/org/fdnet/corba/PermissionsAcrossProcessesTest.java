@@ -8,6 +8,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.fdnet.corba.control.RemoteLiveNetwork;
+import org.fdnet.corba.idl.ChangeOp;
+import org.fdnet.corba.idl.ChangeRequest;
 import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.Host;
 import org.fdnet.corba.idl.NodeSpec;
@@ -132,6 +134,14 @@ class PermissionsAcrossProcessesTest {
         assertThatThrownBy(() -> asWalker.write(IdlMapping.id(new NodeRef("Walk", "Speed")), ValueCodec.encode(1.0)))
                 .isInstanceOf(NO_PERMISSION.class).hasMessageContaining("may not write Walk/Speed");
         assertThat(asWalker.nodes()).contains("Gait/Phase", "Walk/Speed");
+        ChangeRequest holdGait = new ChangeRequest(41, ChangeOp.CO_HOLD, "Gait", IdlMapping.id(CERTAINTY), "", "");
+        assertThatThrownBy(() -> asWalker.prepareChange(holdGait)).isInstanceOf(NO_PERMISSION.class)
+                .hasMessageContaining("certificate 'walker' may not reshape module Gait");
+        assertThat(asOperator.prepareChange(holdGait)).as("the operator prepares it").isEmpty();
+        assertThatThrownBy(() -> asWalker.commitChange(41)).as("a change another certificate prepared")
+                .isInstanceOf(NO_PERMISSION.class).hasMessageContaining("certificate 'operator' prepared it");
+        assertThatThrownBy(() -> asWalker.abortChange(41)).isInstanceOf(NO_PERMISSION.class);
+        asOperator.abortChange(41);
         asWalker.unloadModule("Walk");
         assertThat(asWalker.nodes()).contains("Gait/Phase").doesNotContain("Walk/Speed");
     }
@@ -152,11 +162,25 @@ class PermissionsAcrossProcessesTest {
             assertThat(asWalker.setParameter(new NodeRef("Gait", "Phase"), "x", "1").reason())
                     .contains("certificate 'walker' may not reshape module Gait");
             assertThat(asWalker.send(CERTAINTY, "0.5").reason()).contains("certificate 'walker' may not write main/Certainty");
+            NetworkInfo base = asWalker.snapshot();
+            NetworkInfo gaitEdited = copyOf(base);
+            gaitEdited.addNode("Gait", NodeInfo.data("Extra", LIB + "DoubleData"));
+            assertThat(asWalker.apply("add Gait/Extra", base, gaitEdited).reason()).as("an edit of Gait")
+                    .contains("certificate 'walker' may not reshape module Gait");
+            NetworkInfo walkEdited = copyOf(base);
+            walkEdited.addNode("Walk", NodeInfo.data("Extra", LIB + "DoubleData"));
+            ChangeOutcome walkEdit = asWalker.apply("add Walk/Extra", base, walkEdited);
+            assertThat(walkEdit.executed()).as("an edit of Walk: " + walkEdit.reason()).isTrue();
+            assertThat(asWalker.snapshot().module("Gait").node("Extra")).as("nothing refused was applied").isNull();
             assertThat(asWalker.hold("Walk").executed()).as("walker may reshape Walk").isTrue();
             assertThat(asWalker.resume("Walk").executed()).isTrue();
             assertThat(asWalker.unload("Walk").executed()).as("walker may unload Walk").isTrue();
             assertThat(asWalker.loadedModules()).contains("Gait").doesNotContain("Walk");
         }
+    }
+
+    private static NetworkInfo copyOf(NetworkInfo network) throws Exception {
+        return NetworkRepository.fromText(NetworkRepository.toText(network), "a copy");
     }
 
     /** Modules Walk and Gait, a Data each, loaded at start; main/Certainty. */

@@ -2,6 +2,7 @@ package org.fdnet.corba;
 
 import java.util.Set;
 import java.util.TreeSet;
+import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
@@ -119,6 +120,27 @@ public final class Caller {
      */
     public static void require(Right right, String module) {
         fail(refusal(right, module));
+    }
+
+    /**
+     * Fails the call unless the caller may deploy a network's run on this host (record, size, trace it, tell it the
+     * coordinator): that is loading its module {@code main}.
+     *
+     * @throws NO_PERMISSION with the refusal
+     */
+    public static void requireDeploy() {
+        require(Right.LOAD, ModuleInfo.MAIN);
+    }
+
+    /**
+     * Fails the call unless the caller may reshape the modules of both ends of {@code connection}.
+     *
+     * @param connection a connection to make or remove
+     * @throws NO_PERMISSION with the refusal
+     */
+    public static void requireReshape(ConnectionSpec connection) {
+        require(Right.RESHAPE, connection.data.moduleName);
+        require(Right.RESHAPE, connection.relation.moduleName);
     }
 
     /**

@@ -27,7 +27,6 @@ import org.fdnet.corba.idl.Value;
 import org.fdnet.corba.idl.ValueBatch;
 import org.fdnet.corba.idl.ValueSink;
 import org.fdnet.netinfo.ConnectionInfo;
-import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.MessageRefusedException;
@@ -66,8 +65,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     private final Map<Long, Forwarding> outbound = new ConcurrentHashMap<>();
     private final AtomicLong retiredReceived = new AtomicLong();
     private final Map<NodeRef, Map<String, Long>> seenByTarget = new ConcurrentHashMap<>();
-    /** The certificate that prepared each pending change: only it may commit or abort the change. */
-    private final Map<Long, String> preparedBy = new ConcurrentHashMap<>();
+    private final ChangeOwners changeOwners;
 
     private record Forwarding(OutboundLink link, NodeRef source, AutoCloseable observation) {
     }
@@ -82,6 +80,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         this.notifier = new ChangeNotifier(hostName);
         this.liveChanges = new LiveChanges(hostName, network);
         this.shareChanges = new ShareChanges(hostName, network, policy);
+        this.changeOwners = new ChangeOwners(hostName);
     }
 
     @Override
@@ -131,7 +130,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public boolean recordRun(String address, RunDescription run, long clockOffsetMicros) throws Refused {
-        requireDeploy();
+        Caller.requireDeploy();
         try {
             return network.recordRun(address, IdlMapping.run(run), clockOffsetMicros);
         } catch (IllegalArgumentException | UnsupportedOperationException e) {
@@ -149,7 +148,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public String endRun(String id) {
-        requireDeploy();
+        Caller.requireDeploy();
         try {
             return network.endRun(java.util.UUID.fromString(id)).orElse("");
         } catch (IllegalArgumentException e) {
@@ -159,7 +158,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public int sizeEngine(int workers) throws Refused {
-        requireDeploy();
+        Caller.requireDeploy();
         try {
             return network.sizeEngine(workers);
         } catch (IllegalArgumentException | IllegalStateException | UnsupportedOperationException e) {
@@ -170,7 +169,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void traceRun(String runId, int capacity) throws Refused {
-        requireDeploy();
+        Caller.requireDeploy();
         try {
             network.traceRun(java.util.UUID.fromString(runId), capacity);
         } catch (IllegalArgumentException | UnsupportedOperationException e) {
@@ -180,7 +179,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public TraceBatch takeTrace(String runId, int max) {
-        requireDeploy();
+        Caller.requireDeploy();
         HostTrace.Batch batch;
         try {
             batch = network.takeTrace(java.util.UUID.fromString(runId), Math.max(0, max));
@@ -197,7 +196,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void endTrace(String runId) {
-        requireDeploy();
+        Caller.requireDeploy();
         try {
             network.endTrace(java.util.UUID.fromString(runId));
         } catch (IllegalArgumentException notARun) {
@@ -216,7 +215,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         if (!refusal.isEmpty()) {
             LOG.info("host {} refused change {}: {}", hostName, change.id, refusal);
         } else {
-            preparedBy.put(change.id, Caller.name());
+            changeOwners.prepared(change.id);
         }
         return refusal;
     }
@@ -230,14 +229,14 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         if (!refusal.isEmpty()) {
             LOG.info("host {} refused change {}: {}", hostName, change.id, refusal);
         } else {
-            preparedBy.put(change.id, Caller.name());
+            changeOwners.prepared(change.id);
         }
         return refusal;
     }
 
     @Override
     public void commitChange(long id) throws Refused {
-        requirePreparer(id, "commit");
+        changeOwners.settle(id, "commit");
         ShareChange structural = shareChanges.take(id);
         if (structural != null) {
             String failure = shareChanges.execute(structural, this::closeLinksOf);
@@ -261,8 +260,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void abortChange(long id) {
-        requirePreparer(id, "abort");
-        preparedBy.remove(id);
+        changeOwners.settle(id, "abort");
         liveChanges.abort(id);
         shareChanges.abort(id);
     }
@@ -286,7 +284,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void joinNetwork(NetworkCoordinator coordinator) {
-        requireDeploy();
+        Caller.requireDeploy();
         network.seeWholeNetwork(new CoordinatorView(coordinator, hostName));
         LOG.info("host {}: its Relations' Servants now see the whole network", hostName);
     }
@@ -298,7 +296,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void connect(ConnectionSpec spec) throws UnknownNode, Refused {
-        requireReshape(spec);
+        Caller.requireReshape(spec);
         ConnectionInfo c = IdlMapping.connection(spec);
         requireKnown(spec.data);
         requireKnown(spec.relation);
@@ -308,7 +306,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void disconnect(ConnectionSpec spec) throws UnknownNode {
-        requireReshape(spec);
+        Caller.requireReshape(spec);
         ConnectionInfo c = IdlMapping.connection(spec);
         requireKnown(spec.data);
         requireKnown(spec.relation);
@@ -535,27 +533,6 @@ public final class HostServant extends HostPOA implements AutoCloseable {
             LOG.warn("could not stop observing {}: {}", f.source, e.toString(), e);
         }
         f.link.close();
-    }
-
-    /** Deploying a network's run on this host is loading its module {@code main}. */
-    private static void requireDeploy() {
-        Caller.require(Right.LOAD, ModuleInfo.MAIN);
-    }
-
-    private static void requireReshape(ConnectionSpec spec) {
-        Caller.require(Right.RESHAPE, spec.data.moduleName);
-        Caller.require(Right.RESHAPE, spec.relation.moduleName);
-    }
-
-    private void requirePreparer(long id, String what) {
-        String preparer = preparedBy.get(id);
-        if (preparer != null && !preparer.equals(Caller.name())) {
-            Caller.fail("certificate '" + Caller.name() + "' may not " + what + " change " + id + " on " + hostName
-                    + ": certificate '" + preparer + "' prepared it");
-        }
-        if ("commit".equals(what)) {
-            preparedBy.remove(id);
-        }
     }
 
     private void requireKnown(NodeId id) throws UnknownNode {

@@ -55,5 +55,14 @@
  *   host engine ─▶ HostTrace [≤ capacity; full: drop, count] ◀─takeTrace─ TraceCollector (fdnet run) ─▶ TraceOutput
  * </pre>
  * The run's life around a deployment is {@code org.fdnet.run}'s.
+ *
+ * <p>Permissions (with TLS): every request is checked against the network's signed permissions for the certificate of
+ * the connection that carries it, before the servant changes or reveals anything.
+ * <pre>
+ *   request ─▶ CallerInterceptor (TLS session of its connection ─▶ certificate name, kept in the session)
+ *           ─▶ HostServant / CoordinatorServant / RunningNetworkImpl ─▶ Caller.require(right, node or module)
+ *                 allowed: as before        refused: NO_PERMISSION (or a refused change) naming certificate,
+ *                                                    node or module and right; nothing applied
+ * </pre>
  */
 package org.fdnet.corba;

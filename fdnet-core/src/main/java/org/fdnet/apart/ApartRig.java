@@ -5,7 +5,6 @@ import java.net.InetAddress;
 import java.net.UnknownHostException;
 import java.nio.channels.FileChannel;
 import java.nio.channels.FileLock;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
@@ -16,7 +15,6 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
-import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.slf4j.Logger;
@@ -94,7 +92,7 @@ public final class ApartRig implements AutoCloseable {
                 throw new IllegalArgumentException("host '" + h + "' is named twice");
             }
         }
-        requireRoot();
+        Namespaces.requireRoot();
         sweep(prefix);
         RigNames names = new RigNames(prefix, ProcessHandle.current().pid());
         synchronized (CHOICE_LOCK_IN_THIS_JVM) {
@@ -126,10 +124,10 @@ public final class ApartRig implements AutoCloseable {
      */
     public static List<String> sweep(String prefix) {
         RigNames.requirePrefix(prefix);
-        requireRoot();
+        Namespaces.requireRoot();
         List<String> removed = new ArrayList<>();
         List<String> stale = new ArrayList<>();
-        for (String ns : namespaces()) {
+        for (String ns : Namespaces.list()) {
             Optional<Long> owner = RigNames.ownerOf(prefix, ns);
             if (owner.isPresent() && ProcessHandle.of(owner.get()).map(ProcessHandle::isAlive).orElse(false)) {
                 continue;
@@ -139,7 +137,7 @@ public final class ApartRig implements AutoCloseable {
         // Hosts before the rig's own namespace, as close does: the longest names first.
         stale.sort((a, b) -> Integer.compare(b.length(), a.length()));
         for (String ns : stale) {
-            removeNamespace(ns);
+            Namespaces.remove(ns);
             removed.add(ns);
         }
         if (!removed.isEmpty()) {
@@ -159,7 +157,7 @@ public final class ApartRig implements AutoCloseable {
     public static Optional<ApartRig> find(String prefix) {
         RigNames.requirePrefix(prefix);
         Map<Long, List<String>> byOwner = new LinkedHashMap<>();
-        for (String ns : namespaces()) {
+        for (String ns : Namespaces.list()) {
             RigNames.ownerOf(prefix, ns)
                     .filter(pid -> ProcessHandle.of(pid).map(ProcessHandle::isAlive).orElse(false))
                     .ifPresent(pid -> byOwner.computeIfAbsent(pid, p -> new ArrayList<>()).add(ns));
@@ -180,7 +178,7 @@ public final class ApartRig implements AutoCloseable {
                 continue;
             }
             String host = ns.substring(names.rigNamespace().length() + 1);
-            InetAddress address = addressIn(ns);
+            InetAddress address = Namespaces.addressOf(ns);
             hostsByIndex.put((address.getAddress()[3] & 0xff) - 1, host);
             found.put(host, address);
         }
@@ -193,31 +191,9 @@ public final class ApartRig implements AutoCloseable {
         return Optional.of(rig);
     }
 
-    /** The address a rig gave the host whose namespace is {@code ns}. */
-    private static InetAddress addressIn(String ns) {
-        String shown = SystemCommand.run(SystemCommand.tool("ip"), "-n", ns, "-o", "-4", "addr", "show", "dev",
-                HostLink.HOST_DEVICE);
-        Matcher m = Pattern.compile("inet ([0-9.]+)/").matcher(shown);
-        if (!m.find()) {
-            throw new IllegalStateException("namespace " + ns + " has no address on " + HostLink.HOST_DEVICE
-                    + ": it is not a host of a working rig (fdnet apart down removes it)");
-        }
-        try {
-            return InetAddress.getByName(m.group(1));
-        } catch (UnknownHostException e) {
-            throw new IllegalStateException("namespace " + ns + " has address " + m.group(1), e);
-        }
-    }
-
     /** The process that made this rig and removes it. */
     public long ownerPid() {
         return names.pid();
-    }
-
-    /** The namespaces on this machine, as {@code ip netns list} names them. */
-    static List<String> namespaces() {
-        String listed = SystemCommand.run(SystemCommand.tool("ip"), "netns", "list");
-        return listed.lines().map(String::strip).filter(l -> !l.isEmpty()).map(l -> l.split(" ")[0]).toList();
     }
 
     /**
@@ -348,7 +324,7 @@ public final class ApartRig implements AutoCloseable {
         List<String> failures = new ArrayList<>();
         for (int i = made.size() - 1; i >= 0; i--) {
             try {
-                removeNamespace(made.get(i));
+                Namespaces.remove(made.get(i));
             } catch (IllegalStateException e) {
                 failures.add(e.getMessage());
             }
@@ -360,26 +336,27 @@ public final class ApartRig implements AutoCloseable {
     private void build(List<String> hostNames) {
         String rig = names.rigNamespace();
         addNamespace(rig);
-        ip("-n", rig, "link", "add", BRIDGE, "type", "bridge");
-        ip("-n", rig, "link", "set", BRIDGE, "up");
+        Namespaces.ip("-n", rig, "link", "add", BRIDGE, "type", "bridge");
+        Namespaces.ip("-n", rig, "link", "set", BRIDGE, "up");
         for (int i = 0; i < hostNames.size(); i++) {
             String host = hostNames.get(i);
             String ns = names.hostNamespace(host);
             String bridgeEnd = "v" + i;
             addNamespace(ns);
-            ip("-n", rig, "link", "add", bridgeEnd, "type", "veth", "peer", "name", HostLink.HOST_DEVICE, "netns", ns);
-            ip("-n", rig, "link", "set", bridgeEnd, "master", BRIDGE, "up");
+            Namespaces.ip("-n", rig, "link", "add", bridgeEnd, "type", "veth", "peer", "name", HostLink.HOST_DEVICE,
+                    "netns", ns);
+            Namespaces.ip("-n", rig, "link", "set", bridgeEnd, "master", BRIDGE, "up");
             InetAddress address = hostAddress(i);
-            ip("-n", ns, "addr", "add", address.getHostAddress() + "/24", "dev", HostLink.HOST_DEVICE);
-            ip("-n", ns, "link", "set", HostLink.HOST_DEVICE, "up");
-            ip("-n", ns, "link", "set", "lo", "up");
+            Namespaces.ip("-n", ns, "addr", "add", address.getHostAddress() + "/24", "dev", HostLink.HOST_DEVICE);
+            Namespaces.ip("-n", ns, "link", "set", HostLink.HOST_DEVICE, "up");
+            Namespaces.ip("-n", ns, "link", "set", "lo", "up");
             links.put(host, new HostLink(rig, bridgeEnd, ns));
             addresses.put(host, address);
         }
     }
 
     private void addNamespace(String ns) {
-        ip("netns", "add", ns);
+        Namespaces.add(ns);
         made.add(ns);
     }
 
@@ -409,34 +386,6 @@ public final class ApartRig implements AutoCloseable {
                 + " fdnet apart sweep");
     }
 
-    /** Kills every process left in {@code ns}, then deletes it; a namespace already gone is no failure. */
-    private static void removeNamespace(String ns) {
-        if (!namespaces().contains(ns)) {
-            return;
-        }
-        String pids = SystemCommand.attempt(List.of(SystemCommand.tool("ip"), "netns", "pids", ns), null).output();
-        List<ProcessHandle> left = pids.lines().map(String::strip).filter(l -> l.matches("[0-9]+"))
-                .map(Long::parseLong).map(ProcessHandle::of).flatMap(Optional::stream).toList();
-        for (ProcessHandle p : left) {
-            LOG.info("apart rig: killing process {} left in {}", p.pid(), ns);
-            p.destroyForcibly();
-        }
-        for (ProcessHandle p : left) {
-            try {
-                p.onExit().get(10, TimeUnit.SECONDS);
-            } catch (Exception e) {
-                LOG.warn("process {} in {} did not end: {}", p.pid(), ns, e.toString());
-            }
-        }
-        ip("netns", "del", ns);
-    }
-
-    private static void ip(String... args) {
-        List<String> argv = new ArrayList<>(List.of(SystemCommand.tool("ip")));
-        argv.addAll(List.of(args));
-        SystemCommand.run(argv, null);
-    }
-
     private HostLink link(String name) {
         requireKnown(name);
         return links.get(name);
@@ -446,20 +395,6 @@ public final class ApartRig implements AutoCloseable {
         if (!links.containsKey(name)) {
             throw new IllegalArgumentException("no host '" + name + "' in apart rig " + names.rigNamespace()
                     + " (hosts: " + String.join(", ", links.keySet()) + ")");
-        }
-    }
-
-    /** @throws IllegalStateException in one line when this process is not root */
-    private static void requireRoot() {
-        Object uid;
-        try {
-            uid = Files.getAttribute(Path.of("/proc/self"), "unix:uid");
-        } catch (IOException | UnsupportedOperationException e) {
-            uid = -1;
-        }
-        if (!Integer.valueOf(0).equals(uid)) {
-            throw new IllegalStateException("the apart rig needs root: it makes network namespaces, veth pairs, a"
-                    + " bridge and nftables rules to put hosts on addresses of their own (run it as root)");
         }
     }
 }

@@ -23,7 +23,10 @@ import org.fdnet.tls.TransportSecurity;
  * Hazard of the close: a connection idle for almost {@code callTimeoutMillis} that carries a call just then may be
  * closed under it (the call fails with {@code COMM_FAILURE}, completion unknown), with a chance of about the call's
  * duration over {@code callTimeoutMillis}; links, pings and the naming watch call at least every second, so their
- * connections are never idle that long (and a link retries a failed call; a live change fails and says so).
+ * connections are never idle that long (and a link retries a failed call; a live change fails and says so). And a
+ * link idle for longer meets a closed connection: its next lone value, which its writer's thread puts on the wire
+ * itself, first opens a new one there (about a millisecond on a LAN; a TLS handshake too; at most the connect timeout
+ * when the peer has gone silent meanwhile).
  *
  * @param bindAddress     the address the ORB listens on and writes into its object references
  * @param port            the listening port; 0 picks a free one
@@ -33,7 +36,8 @@ import org.fdnet.tls.TransportSecurity;
  * @param poaThreadsMax   threads serving requests
  *
  * <p>When this process speaks TLS ({@link TransportSecurity}), the ORB listens and connects with SSLIOP only,
- * mutual authentication required both ways: no plain IIOP port is opened.
+ * mutual authentication required both ways: no plain IIOP port is opened; every request it serves is checked against
+ * the network's permissions for the certificate of the connection that carries it ({@link CallerInterceptor}).
  */
 public record OrbSettings(String bindAddress, int port, String namingReference, int callTimeoutMillis,
                           int poaQueueMax, int poaThreadsMax) {
@@ -67,6 +71,7 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
     private static final String SUPPORT_SSL = "jacorb.security.support_ssl";
     private static final String SSL_SOCKET_FACTORY = "jacorb.ssl.socket_factory";
     private static final String SSL_SERVER_SOCKET_FACTORY = "jacorb.ssl.server_socket_factory";
+    private static final String ORB_INITIALIZER = "org.omg.PortableInterceptor.ORBInitializerClass.";
     private static final String[] SSL_OPTIONS = {"jacorb.security.ssl.client.supported_options",
             "jacorb.security.ssl.client.required_options", "jacorb.security.ssl.server.supported_options",
             "jacorb.security.ssl.server.required_options", "jacorb.security.ssl.corbaloc_ssliop.supported_options",
@@ -156,6 +161,7 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
             p.setProperty(SUPPORT_SSL, "on");
             p.setProperty(SSL_SOCKET_FACTORY, IiopTlsSocketFactory.class.getName());
             p.setProperty(SSL_SERVER_SOCKET_FACTORY, IiopTlsServerSocketFactory.class.getName());
+            p.setProperty(ORB_INITIALIZER + CallerInterceptor.Installer.class.getName(), "");
             for (String option : SSL_OPTIONS) {
                 p.setProperty(option, MUTUAL_TRUST);
             }

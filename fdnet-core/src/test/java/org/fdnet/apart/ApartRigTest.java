@@ -7,13 +7,16 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
 
 /** The rig on this machine's kernel: real namespaces, veth pairs, bridge, nftables and TBF (needs root). */
 @Timeout(value = 120, unit = TimeUnit.SECONDS)
@@ -71,6 +74,19 @@ class ApartRigTest {
     }
 
     @Test
+    void shouldSlowAThrottledLinkToItsRate() throws Exception {
+        rig = ApartRig.create(PREFIX, List.of("a", "b"));
+        listen("a");
+        int bytes = 256 * 1024;
+        long unthrottled = send("b", "a", bytes);
+        rig.throttle("a", 1000);
+        long throttled = send("b", "a", bytes);
+        // 256 KiB at 1 Mbit/s is 2.1 s; the bucket lets its first 16 KiB through at once
+        assertTrue(throttled >= 1800, "256 KiB over a 1 Mbit/s link took " + throttled + " ms");
+        assertTrue(unthrottled < throttled / 4, "unthrottled " + unthrottled + " ms, throttled " + throttled + " ms");
+    }
+
+    @Test
     void shouldRefuseAnUnknownHostAndBadFaultsByName() {
         rig = ApartRig.create(PREFIX, List.of("a"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> rig.blackhole("z")).getMessage()
@@ -113,6 +129,25 @@ class ApartRigTest {
         assertEquals("connected", connectAfterListening());
     }
 
+    @Test
+    void shouldRefuseInOneLineSayingWhatRootIsNeededForWhenNotRoot(@TempDir Path dir) throws Exception {
+        // The probe runs as nobody, who cannot read the local Maven repository: its one library is copied.
+        Path slf4j = Path.of(List.of(System.getProperty("java.class.path").split(":")).stream()
+                .filter(p -> p.contains("slf4j-api")).findFirst().orElseThrow());
+        Files.copy(slf4j, dir.resolve("slf4j-api.jar"));
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwxr-xr-x"));
+        Files.setPosixFilePermissions(dir.resolve("slf4j-api.jar"), PosixFilePermissions.fromString("rw-r--r--"));
+        String classPath = String.join(":", Path.of("target", "classes").toAbsolutePath().toString(),
+                Path.of("target", "test-classes").toAbsolutePath().toString(), dir.resolve("slf4j-api.jar").toString());
+        Process p = new ProcessBuilder("setpriv", "--reuid=65534", "--regid=65534", "--clear-groups",
+                Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Dslf4j.internal.verbosity=ERROR",
+                "-cp", classPath, NotRootProbe.class.getName()).redirectError(ProcessBuilder.Redirect.DISCARD).start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        assertEquals(List.of("the apart rig needs root: it makes network namespaces, veth pairs, a bridge and nftables"
+                + " rules to put hosts on addresses of their own (run it as root)"), out.lines().toList());
+    }
+
     private String connectAfterListening() throws Exception {
         listen("a");
         return connect("a", "a");
@@ -132,6 +167,13 @@ class ApartRigTest {
         return new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
     }
 
+    /** Milliseconds {@code bytes} took from {@code from} to the listener on {@code to}. */
+    private long send(String from, String to, int bytes) throws Exception {
+        Process p = java(from, "send", rig.address(to).getHostAddress(), Integer.toString(PORT), Integer.toString(bytes));
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        return Long.parseLong(new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip());
+    }
+
     private Process java(String host, String... args) throws IOException {
         List<String> argv = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"),
@@ -141,7 +183,7 @@ class ApartRigTest {
     }
 
     private static List<String> namespacesOf(String rigNamespace) {
-        return ApartRig.namespaces().stream().filter(n -> n.equals(rigNamespace) || n.startsWith(rigNamespace + "-"))
+        return Namespaces.list().stream().filter(n -> n.equals(rigNamespace) || n.startsWith(rigNamespace + "-"))
                 .toList();
     }
 

@@ -83,7 +83,7 @@ class ApartTlsRunTest {
         List<FdnetChildProcess> hosts = inParallel(List.<Supplier<FdnetChildProcess>>of(
                 () -> host("flyer", naming, keys), () -> host("crawler", naming, keys)));
         FdnetChildProcess run = start("run", "naming", List.of("run", NETWORK, "--bind", address("naming"), "--naming",
-                naming, "--as", "operator", "--for", "40s", "--logger", logger, "--tls", keys.store("operator").toString()),
+                naming, "--as", "operator", "--for", "60s", "--logger", logger, "--tls", keys.store("operator").toString()),
                 "running on 3 hosts");
 
         // While it runs: every port on every address, the run's own included, and the viewer.

@@ -6,7 +6,13 @@ import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.UUID;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 import javax.net.ssl.SSLSocket;
 import org.fdnet.corba.OrbRuntime;
 import org.fdnet.corba.OrbSettings;
@@ -31,22 +37,35 @@ public final class PortRefusalProbe {
     private PortRefusalProbe() {
     }
 
-    public static void main(String[] args) {
+    public static void main(String[] args) throws InterruptedException, ExecutionException {
         TlsIdentity member = TlsIdentity.load(Path.of(args[0]));
         TlsIdentity foreign = TlsIdentity.load(Path.of(args[1]));
+        List<String> ports = List.of(args).subList(2, args.length);
+        ExecutorService knockers = Executors.newFixedThreadPool(ports.size());
         try (OrbRuntime plainOrb = OrbRuntime.start(OrbSettings.defaults().withCallTimeoutMillis(TIMEOUT_MS))) {
-            for (int i = 2; i < args.length; i++) {
-                String label = args[i].substring(0, args[i].indexOf('='));
-                String where = args[i].substring(args[i].indexOf('=') + 1, args[i].lastIndexOf('/'));
-                boolean iiop = args[i].endsWith("/iiop");
-                String host = where.substring(0, where.lastIndexOf(':'));
-                int port = Integer.parseInt(where.substring(where.lastIndexOf(':') + 1));
-                String plain = iiop ? plainCorba(plainOrb, where) : plainHello(host, port);
-                System.out.println("port " + label + " " + where + " member=" + tls(member, host, port) + " plain="
-                        + plain + " foreign=" + tls(foreign, host, port));
+            // Every port at once: a member's knock is judged accepted only after a whole read timeout.
+            List<Future<String>> lines = new ArrayList<>();
+            for (String port : ports) {
+                lines.add(knockers.submit(() -> knock(port, member, foreign, plainOrb)));
             }
+            for (Future<String> line : lines) {
+                System.out.println(line.get());
+            }
+        } finally {
+            knockers.shutdownNow();
         }
         System.out.flush();
+    }
+
+    private static String knock(String port, TlsIdentity member, TlsIdentity foreign, OrbRuntime plainOrb) {
+        String label = port.substring(0, port.indexOf('='));
+        String where = port.substring(port.indexOf('=') + 1, port.lastIndexOf('/'));
+        boolean iiop = port.endsWith("/iiop");
+        String host = where.substring(0, where.lastIndexOf(':'));
+        int number = Integer.parseInt(where.substring(where.lastIndexOf(':') + 1));
+        String plain = iiop ? plainCorba(plainOrb, where) : plainHello(host, number);
+        return "port " + label + " " + where + " member=" + tls(member, host, number) + " plain=" + plain
+                + " foreign=" + tls(foreign, host, number);
     }
 
     /**
@@ -96,7 +115,6 @@ public final class PortRefusalProbe {
             s.getOutputStream().write(0);
             s.getOutputStream().flush();
             InputStream in = s.getInputStream();
-            s.setSoTimeout(2_000);
             return in.read() == -1 ? "refused" : "answered";
         } catch (SocketTimeoutException e) {
             return "accepted";

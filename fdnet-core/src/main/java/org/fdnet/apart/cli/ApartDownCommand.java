@@ -1,5 +1,6 @@
 package org.fdnet.apart.cli;
 
+import java.io.PrintWriter;
 import java.util.Optional;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
@@ -15,7 +16,7 @@ public final class ApartDownCommand extends OnTheRigThatIsUp {
     private static final long WAIT_SECONDS = 30;
 
     @Override
-    int on(ApartRig rig) {
+    int on(ApartRig rig, PrintWriter out) {
         Optional<ProcessHandle> owner = ProcessHandle.of(rig.ownerPid());
         if (owner.isPresent()) {
             owner.get().destroy();
@@ -30,7 +31,7 @@ public final class ApartDownCommand extends OnTheRigThatIsUp {
             }
         }
         ApartRig.sweep(rigName.name);
-        System.out.println("fdnet apart down: rig " + rig.rigNamespace() + " removed");
+        out.println("fdnet apart down: rig " + rig.rigNamespace() + " removed");
         return 0;
     }
 }

@@ -1,6 +1,7 @@
 package org.fdnet.apart.cli;
 
 import java.io.IOException;
+import java.io.PrintWriter;
 import java.util.List;
 import org.fdnet.apart.ApartRig;
 import picocli.CommandLine.Command;
@@ -19,7 +20,7 @@ public final class ApartExecCommand extends OnTheRigThatIsUp {
     List<String> command;
 
     @Override
-    int on(ApartRig rig) {
+    int on(ApartRig rig, PrintWriter out) {
         try {
             return new ProcessBuilder(rig.command(host, command)).inheritIO().start().waitFor();
         } catch (IOException e) {

@@ -1,5 +1,6 @@
 package org.fdnet.apart.cli;
 
+import java.io.PrintWriter;
 import org.fdnet.apart.ApartRig;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
@@ -24,8 +25,8 @@ public final class ApartFaultCommand extends OnTheRigThatIsUp {
     Integer value;
 
     @Override
-    int on(ApartRig rig) {
-        System.out.println("ok: " + host + " " + apply(rig));
+    int on(ApartRig rig, PrintWriter out) {
+        out.println("ok: " + host + " " + apply(rig));
         return 0;
     }
 

@@ -1,5 +1,6 @@
 package org.fdnet.apart.cli;
 
+import java.io.PrintWriter;
 import org.fdnet.apart.ApartRig;
 import picocli.CommandLine.Command;
 
@@ -8,8 +9,8 @@ import picocli.CommandLine.Command;
         description = "Print the rig that is up: each host's address, namespace and the faults on its link.")
 public final class ApartStatusCommand extends OnTheRigThatIsUp {
     @Override
-    int on(ApartRig rig) {
-        RigTable.print(rig, System.out);
+    int on(ApartRig rig, PrintWriter out) {
+        RigTable.print(rig, out);
         return 0;
     }
 }

@@ -23,7 +23,7 @@ public final class ApartSweepCommand implements Callable<Integer> {
     public Integer call() {
         try {
             List<String> removed = ApartRig.sweep(rigName.name);
-            System.out.println("fdnet apart sweep: " + (removed.isEmpty() ? "nothing left behind"
+            spec.commandLine().getOut().println("fdnet apart sweep: " + (removed.isEmpty() ? "nothing left behind"
                     : "removed " + String.join(", ", removed)));
             return 0;
         } catch (IllegalArgumentException | IllegalStateException e) {

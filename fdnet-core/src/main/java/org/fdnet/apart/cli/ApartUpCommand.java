@@ -1,5 +1,6 @@
 package org.fdnet.apart.cli;
 
+import java.io.PrintWriter;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
@@ -38,22 +39,23 @@ public final class ApartUpCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("fdnet apart up: " + e.getMessage());
             return 1;
         }
+        PrintWriter out = spec.commandLine().getOut();
         CountDownLatch removed = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            System.out.println("fdnet apart: removing rig " + rig.rigNamespace() + " …");
+            out.println("fdnet apart: removing rig " + rig.rigNamespace() + " …");
             rig.close();
-            System.out.println("fdnet apart: removed");
-            System.out.flush();
+            out.println("fdnet apart: removed");
+            out.flush();
             removed.countDown();
         }, "fdnet-apart-down"));
-        RigTable.print(rig, System.out);
-        System.out.println();
-        System.out.println("run on a host:  fdnet apart exec HOST -- COMMAND…   (e.g. fdnet apart exec " + hosts.get(0)
+        RigTable.print(rig, out);
+        out.println();
+        out.println("run on a host:  fdnet apart exec HOST -- COMMAND…   (e.g. fdnet apart exec " + hosts.get(0)
                 + " -- bin/fdnet naming --bind " + rig.address(hosts.get(0)).getHostAddress() + " --tls …)");
-        System.out.println("faults:         fdnet apart fault HOST blackhole|heal|loss PERCENT|throttle KBIT|clear");
-        System.out.println("fdnet apart up ready: rig " + rig.rigNamespace() + " on " + rig.subnet()
+        out.println("faults:         fdnet apart fault HOST blackhole|heal|loss PERCENT|throttle KBIT|clear");
+        out.println("fdnet apart up ready: rig " + rig.rigNamespace() + " on " + rig.subnet()
                 + "; Ctrl-C removes it");
-        System.out.flush();
+        out.flush();
         try {
             removed.await();
         } catch (InterruptedException e) {

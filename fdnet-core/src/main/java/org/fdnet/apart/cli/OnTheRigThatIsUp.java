@@ -1,5 +1,6 @@
 package org.fdnet.apart.cli;
 
+import java.io.PrintWriter;
 import java.util.concurrent.Callable;
 import org.fdnet.apart.ApartRig;
 import picocli.CommandLine.Mixin;
@@ -20,7 +21,7 @@ abstract class OnTheRigThatIsUp implements Callable<Integer> {
     @Override
     public final Integer call() {
         try {
-            return on(rigName.running());
+            return on(rigName.running(), spec.commandLine().getOut());
         } catch (IllegalArgumentException | IllegalStateException e) {
             spec.commandLine().getErr().println("fdnet apart " + spec.name() + ": " + e.getMessage());
             return 1;
@@ -30,7 +31,8 @@ abstract class OnTheRigThatIsUp implements Callable<Integer> {
     /**
      * Does the subcommand's work.
      *
+     * @param out where it reports
      * @return the exit code
      */
-    abstract int on(ApartRig rig);
+    abstract int on(ApartRig rig, PrintWriter out);
 }

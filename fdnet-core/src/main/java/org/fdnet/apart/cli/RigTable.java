@@ -1,6 +1,6 @@
 package org.fdnet.apart.cli;
 
-import java.io.PrintStream;
+import java.io.PrintWriter;
 import java.util.List;
 import org.fdnet.apart.ApartRig;
 
@@ -9,7 +9,7 @@ final class RigTable {
     private RigTable() {
     }
 
-    static void print(ApartRig rig, PrintStream out) {
+    static void print(ApartRig rig, PrintWriter out) {
         out.printf("rig %s (process %d), %s:%n", rig.rigNamespace(), rig.ownerPid(), rig.subnet());
         out.printf("  %-16s %-15s %-32s %s%n", "host", "address", "namespace", "faults");
         for (String host : rig.hosts()) {

@@ -116,9 +116,9 @@ public final class CourseMeter {
         return presses(phase(network));
     }
 
-    /** Whether gait phase {@code phase} {leg, in the air, probe attempt} says a probe presses (false for null). */
+    /** Whether gait phase {@code phase} {leg, in the air, probe attempt, …} ({@code GaitPhase}) says a probe presses or a foothold is being proved (false for null). */
     private static boolean presses(Value phase) {
-        return phase != null && phase.length() == 3 && phase.element(2) > 0;
+        return phase != null && phase.length() >= 3 && phase.element(2) > 0;
     }
 
     /** {@code network}'s gait phase, or null without one. */

@@ -62,6 +62,10 @@ public class TransferCrawl extends Relation {
     private static final double THERE = 0.005;
     /** The longest a shift waits for the margin before the crawl goes on regardless, s. */
     private static final double MOST_SHIFT_WAIT = 3;
+    /** Time over which the centre of pressure's error is integrated into the body's place, s. */
+    private static final double CORRECTION = 0.5;
+    /** The largest correction of the body's place from the centre of pressure, m. */
+    private static final double MOST_CORRECTION = 0.06;
     /** A sole under this carries nothing; a sole at this has found the ground, N. */
     private static final double FREE = 6;
     private static final double TOUCH = 20;
@@ -135,6 +139,11 @@ public class TransferCrawl extends Relation {
     private final double[] px = new double[3];
     private final double[] py = new double[3];
     private final double[] slip0 = new double[LEGS];
+    /** The load each foot bore when its foothold was proved, N (the start's footholds are taken as firm). */
+    private final double[] proven = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE};
+    /** The body's correction from the measured centre of pressure, m (ground frame). */
+    private double corrX;
+    private double corrY;
     private final boolean[] slipped = new boolean[LEGS];
     /** How long each foot has stood more than {@link #SLIP} off its place, s. */
     private final double[] slidFor = new double[LEGS];
@@ -171,7 +180,7 @@ public class TransferCrawl extends Relation {
         tries = TRIES.read(p).intValue();
         settle = SETTLE.read(p);
         replaceSlid = REPLACE_SLID.read(p);
-        path = new SwingPath(0.15, SWING_SPEED.read(p), DESCENT.read(p), DEPTH.read(p));
+        path = new SwingPath(0.3, SWING_SPEED.read(p), DESCENT.read(p), DEPTH.read(p));
         proof = new FootholdProof(HOLD.read(p), FIRM);
         double[] foot = new double[3];
         double standZ = -(standingHeight() - FOOT_RADIUS);
@@ -236,7 +245,9 @@ public class TransferCrawl extends Relation {
                 }
             }
             case UNLOAD, HOLD -> {
-                share = Math.min(1, share + dt / transfer);
+                if (!overloads(c) || stateTime > MOST_SHIFT_WAIT) {
+                    share = Math.min(1, share + dt / transfer);
+                }
                 if (share >= 1 && state == State.UNLOAD) {
                     to(State.HOLD);
                 }
@@ -245,6 +256,9 @@ public class TransferCrawl extends Relation {
                 if (v == FootholdProof.Verdict.REJECTED) {
                     reject(c);
                 } else if (v == FootholdProof.Verdict.ACCEPTED && state == State.HOLD) {
+                    if (proving >= 0) {
+                        proven[proving] = soles.force(proving);
+                    }
                     proving = -1;
                     unloading = -1;
                     share = 0;
@@ -276,6 +290,23 @@ public class TransferCrawl extends Relation {
                 }
             }
         }
+    }
+
+    /**
+     * Whether moving more weight off the leg being unloaded would ask a standing foot (other than the one being
+     * proved) for more than it bore when it was proved: the body then corrects first (see {@link #correct}).
+     */
+    private boolean overloads(RelationContext c) {
+        Value t = SensedFeet.named(c, "sole targets");
+        if (t == null || t.length() < LEGS) {
+            return false;
+        }
+        for (int k = 0; k < LEGS; k++) {
+            if (k != leg && k != proving && t.element(k) > proven[k]) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Whether the foot being proved has not given way so far (a rejection starts the re-placing). */
@@ -410,6 +441,21 @@ public class TransferCrawl extends Relation {
 
     /** Where the body must stand for the weight to come down inside the triangle without {@code l}: {x, y}. */
     private double[] shiftTarget(int l) {
+        double[] t = weightPoint(l);
+        // the centre of mass stands off the body's centre by the mass model of the legs plus what the soles taught
+        double ox = KeepBalance.comX(sensed.position) + biasX;
+        double oy = KeepBalance.comY(sensed.position) + biasY;
+        double cos = Math.cos(psi);
+        double sin = Math.sin(psi);
+        return new double[] {t[0] - (cos * ox - sin * oy) + corrX, t[1] - (sin * ox + cos * oy) + corrY};
+    }
+
+    /**
+     * Where the weight must come down before leg {@code l} lifts: inside the triangle of the three others, at the
+     * point where the foot being proved carries {@code proofShare} of it and the other two the rest evenly (the
+     * centroid when none is being proved). {x, y} in the ground frame.
+     */
+    private double[] weightPoint(int l) {
         double tx = 0;
         double ty = 0;
         boolean weighted = proving >= 0 && proving != l;
@@ -421,17 +467,35 @@ public class TransferCrawl extends Relation {
             tx += w * gx[k];
             ty += w * gy[k];
         }
-        // the centre of mass stands off the body's centre by the mass model of the legs plus what the soles taught
-        double ox = KeepBalance.comX(sensed.position) + biasX;
-        double oy = KeepBalance.comY(sensed.position) + biasY;
+        return new double[] {tx, ty};
+    }
+
+    /**
+     * Closes the loop on the measured centre of pressure while the weight is moved: the body is moved by the
+     * remaining error between where the weight should come down and where the soles say it does, integrated over
+     * {@value #CORRECTION} s, at most {@value #MOST_CORRECTION} m.
+     */
+    private void correct(int l, double dt) {
+        if (!sensed.centreOfPressure(DistributeForces.WEIGHT / 2, cop)) {
+            return;
+        }
+        double[] t = weightPoint(l);
         double cos = Math.cos(psi);
         double sin = Math.sin(psi);
-        return new double[] {tx - (cos * ox - sin * oy), ty - (sin * ox + cos * oy)};
+        double ex = t[0] - (bx + cos * cop[0] - sin * cop[1]);
+        double ey = t[1] - (by + sin * cop[0] + cos * cop[1]);
+        double a = dt / CORRECTION / KeepBalance.FOLLOW;
+        corrX = Math.max(-MOST_CORRECTION, Math.min(MOST_CORRECTION, corrX + ex * a));
+        corrY = Math.max(-MOST_CORRECTION, Math.min(MOST_CORRECTION, corrY + ey * a));
     }
 
     /** Moves the body (while all four feet are down) towards where the shift takes it. */
     private void moveBody(double dt) {
-        int l = state == State.SHIFT ? leg : state == State.RESTORE ? proving : -1;
+        int l = state == State.SHIFT || state == State.UNLOAD || state == State.HOLD ? leg
+                : state == State.RESTORE ? proving : -1;
+        if (l >= 0 && state != State.SHIFT && Boolean.parseBoolean(System.getProperty("gait.correct", "false"))) {
+            correct(l, dt);
+        }
         if (l >= 0) {
             double[] t = shiftTarget(l);
             double dx = t[0] - bx;
@@ -568,7 +632,13 @@ public class TransferCrawl extends Relation {
         return v == null || v.length() < 1 ? 0 : v.element(0);
     }
 
+    private final double[] timeIn = new double[State.values().length];
+
     private void to(State s) {
+        timeIn[state.ordinal()] += stateTime;
+        if (Boolean.getBoolean("gait.times") && s == State.SWING && next == 0) {
+            System.out.println("TIMES " + java.util.Arrays.toString(State.values()) + " " + java.util.Arrays.toString(timeIn));
+        }
         if (Boolean.getBoolean("gait.debug")) {
             System.out.printf(Locale.ROOT, "%.2f %s->%s leg %d proving %d b=(%.3f %.3f) psi %.3f slipped %s%n", last, state, s, leg, proving, bx, by, psi, java.util.Arrays.toString(slipped));
         }

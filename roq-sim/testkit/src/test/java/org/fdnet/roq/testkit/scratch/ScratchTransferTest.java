@@ -11,6 +11,7 @@ class ScratchTransferTest {
         String net = System.getProperty("net", "roq-transfer");
         String course = System.getProperty("course", "crossing");
         int secs = Integer.getInteger("secs", 60);
+        System.setProperty("gait.times", System.getProperty("gtimes", "false"));
         System.setProperty("gait.debug", System.getProperty("gdebug", "false"));
         for (String seed : System.getProperty("seeds", "1").split(",")) {
             try (SimulatedRoq roq = SimulatedRoq.builder().network(Path.of("../../networks/" + net + ".fdn"))

@@ -56,6 +56,7 @@ public class TransferCrawl extends Relation {
     private static final double MAX_TURN = 0.3;
     /** Speeds of the body: m/s across the ground, rad/s of turn; body height change, m/s. */
     private static final double BODY_SPEED = 0.3;
+    private static final double BODY_ACCELERATION = 0.6;
     private static final double TURN_SPEED = 0.2;
     private static final double HEIGHT_SPEED = 0.02;
     /** How close the body must be to where the shift takes it, m. */
@@ -143,6 +144,8 @@ public class TransferCrawl extends Relation {
     private final double[] proven = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE};
     /** The body's correction from the measured centre of pressure, m (ground frame). */
     private double corrX;
+    /** The body's speed over the ground now, m/s. */
+    private double speed;
     private double corrY;
     private final boolean[] slipped = new boolean[LEGS];
     /** How long each foot has stood more than {@link #SLIP} off its place, s. */
@@ -211,6 +214,14 @@ public class TransferCrawl extends Relation {
             return;
         }
         learnBias(dt);
+        if (Boolean.getBoolean("gait.times") && state != State.SETTLE) {
+            for (int k = 0; k < LEGS; k++) {
+                boolean air = (state == State.SWING && k == leg) || (state == State.RESWING && k == proving);
+                if (!air && k != unloading && soles.force(k) < 15) {
+                    slackIn[state.ordinal()]++;
+                }
+            }
+        }
         stateTime += dt;
         step(c, now, dt);
         moveBody(dt);
@@ -376,8 +387,22 @@ public class TransferCrawl extends Relation {
 
     /** The swinging foot found the ground: it is the one to prove now, loaded through the distribution. */
     private void setDown(int l) {
-        gx[l] = path.x();
-        gy[l] = path.y();
+        // the foot stays where it found the ground (its sensed place, against the other feet's), not where it was
+        // sent: holding it elsewhere would set the legs against each other through the ground
+        double rx = 0;
+        double ry = 0;
+        int n = 0;
+        for (int k = 0; k < LEGS; k++) {
+            if (k != l) {
+                double[] e = sensedGround(k);
+                rx += e[0] - gx[k];
+                ry += e[1] - gy[k];
+                n++;
+            }
+        }
+        double[] e = sensedGround(l);
+        gx[l] = e[0] - rx / n;
+        gy[l] = e[1] - ry / n;
         gz[l] = path.z();
         proving = l;
         attempt++;
@@ -496,16 +521,20 @@ public class TransferCrawl extends Relation {
         if (l >= 0 && state != State.SHIFT && Boolean.parseBoolean(System.getProperty("gait.correct", "false"))) {
             correct(l, dt);
         }
+        if (l < 0) {
+            speed = 0;
+        }
         if (l >= 0) {
             double[] t = shiftTarget(l);
             double dx = t[0] - bx;
             double dy = t[1] - by;
             double d = Math.hypot(dx, dy);
-            double most = BODY_SPEED * dt;
-            double k = Math.min(1, 1 - Math.exp(-dt / 0.15));
-            double move = Math.min(most, d * k + 0.002 * dt / 0.01);
+            // the speed that stops the body at the target with the deceleration allowed, no faster than BODY_SPEED,
+            // reached with that acceleration: a body jerked into motion makes the lightly loaded feet slide
+            double wanted = Math.min(BODY_SPEED, Math.sqrt(2 * BODY_ACCELERATION * d));
+            speed = Math.min(wanted, speed + BODY_ACCELERATION * dt);
             if (d > 1e-9) {
-                move = Math.min(move, d);
+                double move = Math.min(d, speed * dt + 0.0002);
                 bx += dx / d * move;
                 by += dy / d * move;
             }
@@ -633,11 +662,12 @@ public class TransferCrawl extends Relation {
     }
 
     private final double[] timeIn = new double[State.values().length];
+    private final long[] slackIn = new long[State.values().length];
 
     private void to(State s) {
         timeIn[state.ordinal()] += stateTime;
         if (Boolean.getBoolean("gait.times") && s == State.SWING && next == 0) {
-            System.out.println("TIMES " + java.util.Arrays.toString(State.values()) + " " + java.util.Arrays.toString(timeIn));
+            System.out.println("TIMES " + java.util.Arrays.toString(State.values()) + " " + java.util.Arrays.toString(timeIn) + " slack " + java.util.Arrays.toString(slackIn));
         }
         if (Boolean.getBoolean("gait.debug")) {
             System.out.printf(Locale.ROOT, "%.2f %s->%s leg %d proving %d b=(%.3f %.3f) psi %.3f slipped %s%n", last, state, s, leg, proving, bx, by, psi, java.util.Arrays.toString(slipped));

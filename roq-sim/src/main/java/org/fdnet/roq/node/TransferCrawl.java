@@ -19,23 +19,25 @@ import org.fdnet.runtime.Value;
  * last. Each step of leg L, the foot N set down before it being still unproved:
  *
  * <ol>
- *   <li><b>shift</b> — the body moves until the measured centre of pressure lies inside the triangle of the three
- *   feet other than L by {@code margin} m, at the point where N carries {@code proofShare} of the weight (the other
- *   two the rest, evenly) — the body's progress comes from the footholds moving ahead;</li>
- *   <li><b>unload</b> — L's share of the weight is moved, over {@code transfer} s, onto the other three through the
- *   force distribution ({@link DistributeForces}, tracked by {@link TrackSoleForces}): N now carries what it will
- *   carry while L swings. This is N's probe ({@link FootholdProof}): held {@code hold} s it is accepted; a foothold
- *   that gives way (its force collapses) is rejected while L still stands — the body goes back over the triangle
- *   without N, N is lifted and set down {@code retreat} m shorter, and is proved again;</li>
+ *   <li><b>shift</b> — N's share of the weight is moved onto it through the force distribution over {@code
+ *   transfer} s ({@link DistributeForces}, tracked by {@link TrackSoleForces}) while the body moves, with limited
+ *   acceleration, until the measured centre of pressure lies inside the triangle of the three feet other than L by
+ *   {@code margin} m, at the point where N carries {@code proofShare} of the weight (the other two the rest, evenly)
+ *   — the body's progress comes from the footholds moving ahead;</li>
+ *   <li><b>unload</b> — L's share of the weight is moved, over {@code transfer} s, onto the other three: N now
+ *   carries what it will carry while L swings. This is N's probe ({@link FootholdProof}): held {@code hold} s it is
+ *   accepted; a foothold that gives way (its force collapses) is rejected while L still stands — the body goes back
+ *   over the triangle without N, N is lifted and set down {@code retreat} m shorter, and is proved again. The
+ *   unloading waits while it would ask another standing foot for more than that foot bore when it was proved;</li>
  *   <li><b>swing</b> — L rises until its sole is free, moves to its foothold {@code stride}·5/8 ahead of the feet's
  *   centre and comes down until its sole finds the ground ({@link SwingPath}); it is the next step's N.</li>
  * </ol>
  *
- * <p>Feet that stay where they were set: each foot's place on the ground is known from where it was set down, and
- * its sensed place (joint angles, {@link SensedFeet}) against the body's motion (the mean of the feet's) tells if it
- * slid; one that slid more than {@value #SLIP} m is re-placed where it was set, at the next step, before the crawl
- * goes on. Slips are counted into the Data named {@code slips}, rejected footholds into {@code footholds rejected},
- * when connected.
+ * <p>Feet that stay where they were set: a foot is held where it found the ground (its sensed place against the
+ * other feet's), not where it was sent, so the legs do not push against each other through the ground. Its sensed
+ * place (joint angles, {@link SensedFeet}) against the body's motion (the mean of the feet's) tells if it slid more
+ * than {@value #SLIP} m; slips are counted into the Data named {@code slips}, and with {@code replaceSlid} such a foot
+ * is re-placed where it was set at the next step. Rejected footholds are counted into {@code footholds rejected}.
  *
  * <p>Inputs by name: {@code foot forces}, {@code joint angles}, {@code attitude}, {@code sole targets} (the
  * distribution's), {@code steer} (rad per cycle, optional, e.g. from {@link HoldCourse}). Outputs by name: {@code gait
@@ -63,16 +65,17 @@ public class TransferCrawl extends Relation {
     private static final double THERE = 0.005;
     /** The longest a shift waits for the margin before the crawl goes on regardless, s. */
     private static final double MOST_SHIFT_WAIT = 3;
-    /** Time over which the centre of pressure's error is integrated into the body's place, s. */
-    private static final double CORRECTION = 0.5;
-    /** The largest correction of the body's place from the centre of pressure, m. */
-    private static final double MOST_CORRECTION = 0.06;
     /** A sole under this carries nothing; a sole at this has found the ground, N. */
     private static final double FREE = 6;
     private static final double TOUCH = 20;
     /** A foot whose peak passed this and then collapsed gave way, N. */
     private static final double FIRM = 25;
 
+    /**
+     * Where the step is: standing before the first; a foot just set down (the next step begins at the next firing);
+     * shifting; unloading; holding the proof; swinging; going back over the three feet after a foothold gave way;
+     * re-placing that foot.
+     */
     enum State { SETTLE, LOAD, SHIFT, UNLOAD, HOLD, SWING, RESTORE, RESWING }
 
     public static final ParameterSpec<Double> STRIDE = ParameterSpec.number("stride").unit("m").range(0, 0.4)
@@ -214,14 +217,6 @@ public class TransferCrawl extends Relation {
             return;
         }
         learnBias(dt);
-        if (Boolean.getBoolean("gait.times") && state != State.SETTLE) {
-            for (int k = 0; k < LEGS; k++) {
-                boolean air = (state == State.SWING && k == leg) || (state == State.RESWING && k == proving);
-                if (!air && k != unloading && soles.force(k) < 15) {
-                    slackIn[state.ordinal()]++;
-                }
-            }
-        }
         stateTime += dt;
         step(c, now, dt);
         moveBody(dt);
@@ -305,7 +300,8 @@ public class TransferCrawl extends Relation {
 
     /**
      * Whether moving more weight off the leg being unloaded would ask a standing foot (other than the one being
-     * proved) for more than it bore when it was proved: the body then corrects first (see {@link #correct}).
+     * proved) for more than it bore when it was proved: the unloading then waits (at most {@value #MOST_SHIFT_WAIT} s)
+     * while the body settles where the shift took it.
      */
     private boolean overloads(RelationContext c) {
         Value t = SensedFeet.named(c, "sole targets");
@@ -422,9 +418,6 @@ public class TransferCrawl extends Relation {
     private void reject(RelationContext c) {
         rejected++;
         rejectedHere++;
-        if (Boolean.getBoolean("gait.debug")) {
-            System.out.println("REJECT " + proving + " peak " + proof.peak() + " now " + soles.force(proving));
-        }
         c.report("leg " + proving + ": foothold gave way under " + Math.round(proof.peak()) + " N, re-placing ("
                 + rejected + " so far)");
         if (c.outputIndex("footholds rejected") >= 0) {
@@ -472,7 +465,7 @@ public class TransferCrawl extends Relation {
         double oy = KeepBalance.comY(sensed.position) + biasY;
         double cos = Math.cos(psi);
         double sin = Math.sin(psi);
-        return new double[] {t[0] - (cos * ox - sin * oy) + corrX, t[1] - (sin * ox + cos * oy) + corrY};
+        return new double[] {t[0] - (cos * ox - sin * oy), t[1] - (sin * ox + cos * oy)};
     }
 
     /**
@@ -495,32 +488,10 @@ public class TransferCrawl extends Relation {
         return new double[] {tx, ty};
     }
 
-    /**
-     * Closes the loop on the measured centre of pressure while the weight is moved: the body is moved by the
-     * remaining error between where the weight should come down and where the soles say it does, integrated over
-     * {@value #CORRECTION} s, at most {@value #MOST_CORRECTION} m.
-     */
-    private void correct(int l, double dt) {
-        if (!sensed.centreOfPressure(DistributeForces.WEIGHT / 2, cop)) {
-            return;
-        }
-        double[] t = weightPoint(l);
-        double cos = Math.cos(psi);
-        double sin = Math.sin(psi);
-        double ex = t[0] - (bx + cos * cop[0] - sin * cop[1]);
-        double ey = t[1] - (by + sin * cop[0] + cos * cop[1]);
-        double a = dt / CORRECTION / KeepBalance.FOLLOW;
-        corrX = Math.max(-MOST_CORRECTION, Math.min(MOST_CORRECTION, corrX + ex * a));
-        corrY = Math.max(-MOST_CORRECTION, Math.min(MOST_CORRECTION, corrY + ey * a));
-    }
-
     /** Moves the body (while all four feet are down) towards where the shift takes it. */
     private void moveBody(double dt) {
         int l = state == State.SHIFT || state == State.UNLOAD || state == State.HOLD ? leg
                 : state == State.RESTORE ? proving : -1;
-        if (l >= 0 && state != State.SHIFT && Boolean.parseBoolean(System.getProperty("gait.correct", "false"))) {
-            correct(l, dt);
-        }
         if (l < 0) {
             speed = 0;
         }
@@ -591,9 +562,6 @@ public class TransferCrawl extends Relation {
             double s = Math.hypot(e[0] - gx[k] - rx, e[1] - gy[k] - ry);
             slidFor[k] = s - slip0[k] > SLIP ? slidFor[k] + dt : 0;
             if (slidFor[k] >= SLID_FOR) {
-                if (Boolean.getBoolean("gait.debug")) {
-                    System.out.printf(Locale.ROOT, "SLIP %d %.3f (from %.3f)%n", k, s, slip0[k]);
-                }
                 slipped[k] = true;
                 slips++;
             }
@@ -661,17 +629,7 @@ public class TransferCrawl extends Relation {
         return v == null || v.length() < 1 ? 0 : v.element(0);
     }
 
-    private final double[] timeIn = new double[State.values().length];
-    private final long[] slackIn = new long[State.values().length];
-
     private void to(State s) {
-        timeIn[state.ordinal()] += stateTime;
-        if (Boolean.getBoolean("gait.times") && s == State.SWING && next == 0) {
-            System.out.println("TIMES " + java.util.Arrays.toString(State.values()) + " " + java.util.Arrays.toString(timeIn) + " slack " + java.util.Arrays.toString(slackIn));
-        }
-        if (Boolean.getBoolean("gait.debug")) {
-            System.out.printf(Locale.ROOT, "%.2f %s->%s leg %d proving %d b=(%.3f %.3f) psi %.3f slipped %s%n", last, state, s, leg, proving, bx, by, psi, java.util.Arrays.toString(slipped));
-        }
         state = s;
         stateTime = 0;
     }

@@ -70,6 +70,8 @@ public class TransferCrawl extends Relation {
     private static final double TOUCH = 20;
     /** A foot whose peak passed this and then collapsed gave way, N. */
     private static final double FIRM = 25;
+    /** A foot just set down counts as loaded from this sole force on, N (DistributeForces' least, by default). */
+    private static final double LOADED = 15;
 
     /**
      * Where the step is: standing before the first; a foot just set down (the next step begins at the next firing);
@@ -239,7 +241,9 @@ public class TransferCrawl extends Relation {
                 if (unloading >= 0) {
                     // the foot set down last is loaded through the distribution while the body shifts
                     share = Math.max(0, share - dt / transfer);
-                    if (share <= 0) {
+                    // its loading ends when its sole bears the least load the distribution asks (the admittance
+                    // follows the target with a lag), or after one more transfer time at most
+                    if (share <= 0 && (soles.force(proving) >= LOADED || stateTime > 2 * transfer)) {
                         unloading = -1;
                         recordSetDown(proving);
                     }

@@ -17,8 +17,7 @@ import org.junit.jupiter.api.Timeout;
 /**
  * networks/roq-transfer.fdn, the weight-transfer crawl, on the simulated RoQ: the foot set down last is proved by
  * the load the weight transfer before the next lift puts on it, so a fragile cell under a foothold breaks while
- * that foot is being proved — counted as the probe's — and the foothold is re-placed while the other three feet
- * carry the body.
+ * that foot is being proved — counted as the probe's — while the other three feet still carry the body.
  */
 @Timeout(300)
 class RoqTransferTest {
@@ -37,15 +36,19 @@ class RoqTransferTest {
                 flat.startY() - 0.30, 0.24, 0.24, 0.03, 40)));
     }
 
+    /**
+     * The cell breaks under the proof's load, never under an accepted foot. The foot then stands on the pit's floor
+     * (the force control presses it down faster than its force collapses), which bears the load and is accepted:
+     * re-placing, on a collapse, is the exception.
+     */
     @Test
-    void shouldBreakACellUnderANewFootholdWhileProvingItAndReplaceThatFoothold() {
+    void shouldBreakACellUnderANewFootholdWhileProvingItAndNeverUnderAnAcceptedFoot() {
         try (SimulatedRoq roq = SimulatedRoq.builder().network(TRANSFER).course(cellUnderTheFirstFoothold())
                 .withoutNoise().start()) {
             roq.runFor(Duration.ofSeconds(25));
             RoqMeasures m = roq.measures();
             assertThat(m.probeBroken()).as("the cell broke while its foothold was being proved").isEqualTo(1);
             assertThat(m.loadedBreakthroughs()).as("cells broken under an accepted foot").isZero();
-            assertThat(count(roq, "Gait/footholds rejected")).as("footholds rejected").isGreaterThanOrEqualTo(1);
             assertThat(m.fallen()).isFalse();
             assertThat(m.distance()).as("metres walked on").isGreaterThan(0.2);
         }
@@ -59,6 +62,26 @@ class RoqTransferTest {
             assertThat(m.fallen()).isFalse();
             assertThat(count(roq, "Gait/footholds rejected")).as("footholds rejected on flat ground").isZero();
             assertThat(m.distance()).as("metres walked").isGreaterThan(0.5);
+        }
+    }
+
+    /**
+     * The crossing course, 100 s, noise on. Bounds from {@code bench roq --part breakthroughs} over noise seeds 1–24:
+     * no fall in any run; at most one loaded-foot breakthrough a run (3 runs of 24 had one, under a foot that had slid
+     * or a swinging one); walked 2.72 m median, 2.24 m least — the bound 2.15 m is 21 % below the median.
+     */
+    @Test
+    void shouldCrossTheFragileBandsWithoutFallingAndAtMostOneLoadedFootBreakthroughARun() {
+        for (long noise : new long[] {1, 2, 3}) {
+            try (SimulatedRoq roq = SimulatedRoq.builder().network(TRANSFER).course("crossing").noise(noise).start()) {
+                roq.runFor(Duration.ofSeconds(100));
+                RoqMeasures m = roq.measures();
+                assertThat(m.fallen()).as("fallen, noise %d", noise).isFalse();
+                assertThat(m.probeBroken()).as("crusts broken while being proved, noise %d", noise).isPositive();
+                assertThat(m.loadedBreakthroughs()).as("loaded-foot breakthroughs, noise %d: %s", noise, m)
+                        .isLessThanOrEqualTo(1);
+                assertThat(m.distance()).as("metres walked, noise %d", noise).isGreaterThan(2.15);
+            }
         }
     }
 

@@ -15,12 +15,18 @@ import picocli.CommandLine.Spec;
 @Command(name = "keys", mixinStandardHelpOptions = true,
         description = {"Make a network's CA and a certificate for each named process (JDK keytool), for --tls.",
                 "Give each process its own DIR/NAME.p12 and the DIR/password file; keep DIR/ca.p12 off the robots.",
-                "Run again with new names to add processes to the same network."})
+                "Run again with new names to add processes to the same network.",
+                "DIR/permissions (signed by the CA in DIR/permissions.sig) says who may do what; its default allows"
+                        + " everything to every member. After editing it, sign it again with --sign-permissions."})
 public final class KeysCommand implements Callable<Integer> {
     @Option(names = "--out", required = true, paramLabel = "DIR", description = "folder for the network's key files")
     Path dir;
 
-    @Parameters(arity = "1..*", paramLabel = "NAME",
+    @Option(names = "--sign-permissions",
+            description = "check DIR/permissions and sign it again with the CA's key (after editing it); no NAME needed")
+    boolean signPermissions;
+
+    @Parameters(arity = "0..*", paramLabel = "NAME",
             description = "process names: hosts (flyer, crawler), the run's host, naming, logger, viewer, …")
     List<String> names;
 
@@ -30,7 +36,17 @@ public final class KeysCommand implements Callable<Integer> {
     @Override
     public Integer call() throws InterruptedException {
         KeyMaker maker = new KeyMaker(dir);
+        if (names == null || names.isEmpty()) {
+            if (!signPermissions) {
+                spec.commandLine().getErr().println("fdnet keys: name at least one process (or give --sign-permissions)");
+                return 2;
+            }
+            names = List.of();
+        }
         try {
+            if (signPermissions) {
+                spec.commandLine().getOut().println("signed " + maker.signPermissions());
+            }
             for (Path made : maker.make(names)) {
                 spec.commandLine().getOut().println("made " + made);
             }

@@ -17,12 +17,16 @@ import java.util.List;
 import java.util.function.Supplier;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.runtime.ChangeOutcome;
+import org.fdnet.tls.Right;
 import org.omg.CORBA.SystemException;
 
 /**
  * The CORBA servant of {@code interface NetworkCoordinator}: what every host's Servants ask about the whole network
  * and how they reshape it, served by the process that runs the network over a {@link DistributedControl}.
- * {@link #publish} activates it on that process's ORB and tells every host of the deployment about it.
+ * {@link #publish} activates it on that process's ORB and tells every host of the deployment about it. The calling
+ * host's certificate needs {@code read} to read a Data, {@code reshape} on every module an edit changes, {@code load},
+ * {@code unload} or {@code reshape} (hold, resume) on the module it changes, and {@code reshape} of every module to
+ * send a servant message ({@link Caller}).
  */
 public final class CoordinatorServant extends NetworkCoordinatorPOA {
     private final DistributedControl control;
@@ -45,6 +49,7 @@ public final class CoordinatorServant extends NetworkCoordinatorPOA {
 
     @Override
     public Value read(NodeId data) throws UnknownNode, Refused {
+        Caller.require(Right.READ, IdlMapping.ref(data));
         String home = control.homeOf(IdlMapping.ref(data));
         Host host = home == null ? null : control.deployment().host(home);
         if (host == null) {
@@ -66,11 +71,24 @@ public final class CoordinatorServant extends NetworkCoordinatorPOA {
             return outcome(ChangeOutcome.failed(description, "the edited network is not valid: " + e.getMessage()
                     + "; nothing changed on any host"));
         }
+        String refusal = Caller.refusalToEdit(NetworkDescriptions.decode(control.description()).definition(), definition);
+        if (refusal != null) {
+            return outcome(ChangeOutcome.failed(description, refusal + "; nothing changed on any host"));
+        }
         return whenFree(description, () -> control.applyDefinition(description, basedOn, definition));
     }
 
     @Override
     public Outcome changeModule(ModuleOp op, String moduleName) {
+        Right right = switch (op.value()) {
+            case ModuleOp._MO_LOAD -> Right.LOAD;
+            case ModuleOp._MO_UNLOAD -> Right.UNLOAD;
+            default -> Right.RESHAPE;
+        };
+        String refusal = Caller.refusal(right, moduleName);
+        if (refusal != null) {
+            return outcome(ChangeOutcome.failed(right.word() + " " + moduleName, refusal));
+        }
         return switch (op.value()) {
             case ModuleOp._MO_LOAD -> whenFree("load " + moduleName, () -> control.load(moduleName));
             case ModuleOp._MO_UNLOAD -> whenFree("unload " + moduleName, () -> control.unload(moduleName));
@@ -82,6 +100,7 @@ public final class CoordinatorServant extends NetworkCoordinatorPOA {
     @Override
     public Value sendMessage(String fromHost, String servantPath, String message, Value argument)
             throws UnknownServant, Refused {
+        Caller.requireEveryModule(Right.RESHAPE);
         List<String> silent = new ArrayList<>();
         for (String name : control.deployment().plan().hosts()) {
             Host host = control.deployment().host(name);

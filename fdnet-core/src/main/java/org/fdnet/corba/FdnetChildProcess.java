@@ -48,7 +48,17 @@ public final class FdnetChildProcess implements AutoCloseable {
     /** As above, the JVM started with {@code jvmOptions} too (e.g. {@code -Duser.home=DIR} for a home of its own). */
     public static FdnetChildProcess start(String label, List<String> jvmOptions, List<String> fdnetArgs,
                                           String readyMarker, long timeoutMillis) {
-        List<String> command = new ArrayList<>();
+        return start(label, List.of(), jvmOptions, fdnetArgs, readyMarker, timeoutMillis);
+    }
+
+    /**
+     * As above, the JVM started through {@code launchPrefix}: e.g. {@code ip netns exec NS} from
+     * {@code ApartRig.command(host, List.of())}, to run it on a host of the apart rig. The prefix must exec the JVM
+     * (keep its process id), so that stopping and killing reach it.
+     */
+    public static FdnetChildProcess start(String label, List<String> launchPrefix, List<String> jvmOptions,
+                                          List<String> fdnetArgs, String readyMarker, long timeoutMillis) {
+        List<String> command = new ArrayList<>(launchPrefix);
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         command.add("-Xss1m");
         command.addAll(jvmOptions);

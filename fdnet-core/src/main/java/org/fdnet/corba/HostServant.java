@@ -7,6 +7,7 @@ import java.util.NoSuchElementException;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
 import org.fdnet.corba.idl.ChangeKind;
+import org.fdnet.corba.idl.ChangeOp;
 import org.fdnet.corba.idl.ChangeRequest;
 import org.fdnet.corba.idl.ConnectionSpec;
 import org.fdnet.corba.idl.HostPOA;
@@ -30,6 +31,7 @@ import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.runtime.MessageRefusedException;
 import org.fdnet.runtime.ServantRegistry;
+import org.fdnet.tls.Right;
 import org.omg.CORBA.ORB;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -39,7 +41,12 @@ import org.slf4j.LoggerFactory;
  * requests into calls on the host's {@link LocalNetwork} and runs the host's ends of cross-host links.
  *
  * <p>Errors a caller can cause come back as IDL exceptions whose text names the node and the reason; the
- * host keeps serving. Links: inbound ends ({@link InboundLink}) by link id; outbound ends
+ * host keeps serving. Every operation that reveals a value or changes the host first asks {@link Caller} whether the
+ * caller's certificate may: values need {@code read} or {@code write} on the Data, structure {@code reshape},
+ * {@code load} or {@code unload} on the module, deploying a run ({@link #recordRun}, {@link #sizeEngine},
+ * {@link #traceRun}, {@link #joinNetwork}) {@code load} of {@code main}, servant messages {@code reshape} of every
+ * module; a refusal is the call's {@code NO_PERMISSION} and nothing of the call is applied. Names, nodes, liveness
+ * and structural notices stay open to every member. Links: inbound ends ({@link InboundLink}) by link id; outbound ends
  * ({@link OutboundLink}) observe a local node and push its values to a peer.
  */
 public final class HostServant extends HostPOA implements AutoCloseable {
@@ -58,6 +65,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     private final Map<Long, Forwarding> outbound = new ConcurrentHashMap<>();
     private final AtomicLong retiredReceived = new AtomicLong();
     private final Map<NodeRef, Map<String, Long>> seenByTarget = new ConcurrentHashMap<>();
+    private final ChangeOwners changeOwners;
 
     private record Forwarding(OutboundLink link, NodeRef source, AutoCloseable observation) {
     }
@@ -72,6 +80,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         this.notifier = new ChangeNotifier(hostName);
         this.liveChanges = new LiveChanges(hostName, network);
         this.shareChanges = new ShareChanges(hostName, network, policy);
+        this.changeOwners = new ChangeOwners(hostName);
     }
 
     @Override
@@ -86,6 +95,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void createNode(NodeSpec spec) throws Refused {
+        Caller.require(Right.RESHAPE, spec.id.moduleName);
         NodeInfo node = IdlMapping.node(spec, hostName);
         String refusal = policy.refusal(node);
         if (refusal != null) {
@@ -99,6 +109,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void createStandIn(NodeSpec spec, String homeHost) throws Refused {
+        Caller.require(Right.RESHAPE, spec.id.moduleName);
         NodeRef ref = IdlMapping.ref(spec.id);
         refuseOnError(ref, () -> network.createStandIn(ref, IdlMapping.node(spec, homeHost)));
         notifier.publish(ChangeKind.NODE_CREATED, ref + " (stand-in)");
@@ -106,6 +117,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void destroyNode(NodeId id) throws UnknownNode {
+        Caller.require(Right.RESHAPE, id.moduleName);
         NodeRef ref = IdlMapping.ref(id);
         closeLinksOf(ref);
         try {
@@ -118,6 +130,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public boolean recordRun(String address, RunDescription run, long clockOffsetMicros) throws Refused {
+        Caller.requireDeploy();
         try {
             return network.recordRun(address, IdlMapping.run(run), clockOffsetMicros);
         } catch (IllegalArgumentException | UnsupportedOperationException e) {
@@ -135,6 +148,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public String endRun(String id) {
+        Caller.requireDeploy();
         try {
             return network.endRun(java.util.UUID.fromString(id)).orElse("");
         } catch (IllegalArgumentException e) {
@@ -144,6 +158,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public int sizeEngine(int workers) throws Refused {
+        Caller.requireDeploy();
         try {
             return network.sizeEngine(workers);
         } catch (IllegalArgumentException | IllegalStateException | UnsupportedOperationException e) {
@@ -154,6 +169,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void traceRun(String runId, int capacity) throws Refused {
+        Caller.requireDeploy();
         try {
             network.traceRun(java.util.UUID.fromString(runId), capacity);
         } catch (IllegalArgumentException | UnsupportedOperationException e) {
@@ -163,6 +179,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public TraceBatch takeTrace(String runId, int max) {
+        Caller.requireDeploy();
         HostTrace.Batch batch;
         try {
             batch = network.takeTrace(java.util.UUID.fromString(runId), Math.max(0, max));
@@ -179,6 +196,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void endTrace(String runId) {
+        Caller.requireDeploy();
         try {
             network.endTrace(java.util.UUID.fromString(runId));
         } catch (IllegalArgumentException notARun) {
@@ -188,24 +206,37 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public String prepareChange(ChangeRequest change) {
+        Caller.fail(switch (change.op.value()) {
+            case ChangeOp._CO_SEND -> Caller.refusal(Right.WRITE, IdlMapping.ref(change.node));
+            case ChangeOp._CO_SET_PARAMETER -> Caller.refusal(Right.RESHAPE, change.node.moduleName);
+            default -> Caller.refusal(Right.RESHAPE, change.moduleName);
+        });
         String refusal = liveChanges.prepare(change);
         if (!refusal.isEmpty()) {
             LOG.info("host {} refused change {}: {}", hostName, change.id, refusal);
+        } else {
+            changeOwners.prepared(change.id);
         }
         return refusal;
     }
 
     @Override
     public String prepareShareChange(ShareChange change) {
+        for (String module : ShareChanges.modules(change)) {
+            Caller.require(Right.RESHAPE, module);
+        }
         String refusal = shareChanges.prepare(change);
         if (!refusal.isEmpty()) {
             LOG.info("host {} refused change {}: {}", hostName, change.id, refusal);
+        } else {
+            changeOwners.prepared(change.id);
         }
         return refusal;
     }
 
     @Override
     public void commitChange(long id) throws Refused {
+        changeOwners.settle(id, "commit");
         ShareChange structural = shareChanges.take(id);
         if (structural != null) {
             String failure = shareChanges.execute(structural, this::closeLinksOf);
@@ -229,12 +260,14 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void abortChange(long id) {
+        changeOwners.settle(id, "abort");
         liveChanges.abort(id);
         shareChanges.abort(id);
     }
 
     @Override
     public Value answerMessage(String servantPath, String message, Value argument) throws UnknownServant, Refused {
+        Caller.requireEveryModule(Right.RESHAPE);
         ServantRegistry servants = network.servants().orElse(null);
         if (servants == null || !servants.answersHere(servantPath)) {
             throw new UnknownServant(servantPath);
@@ -251,6 +284,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void joinNetwork(NetworkCoordinator coordinator) {
+        Caller.requireDeploy();
         network.seeWholeNetwork(new CoordinatorView(coordinator, hostName));
         LOG.info("host {}: its Relations' Servants now see the whole network", hostName);
     }
@@ -262,6 +296,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void connect(ConnectionSpec spec) throws UnknownNode, Refused {
+        Caller.requireReshape(spec);
         ConnectionInfo c = IdlMapping.connection(spec);
         requireKnown(spec.data);
         requireKnown(spec.relation);
@@ -271,6 +306,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void disconnect(ConnectionSpec spec) throws UnknownNode {
+        Caller.requireReshape(spec);
         ConnectionInfo c = IdlMapping.connection(spec);
         requireKnown(spec.data);
         requireKnown(spec.relation);
@@ -280,6 +316,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public Value read(NodeId data) throws UnknownNode, Refused {
+        Caller.require(Right.READ, IdlMapping.ref(data));
         requireNode(data);
         Object v = network.read(IdlMapping.ref(data));
         if (v == null) {
@@ -290,6 +327,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void write(NodeId data, Value v) throws UnknownNode, Refused {
+        Caller.require(Right.WRITE, IdlMapping.ref(data));
         requireNode(data);
         NodeRef ref = IdlMapping.ref(data);
         refuseOnError(ref, () -> network.write(ref, ValueCodec.decode(v)));
@@ -297,6 +335,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void loadModule(String moduleName, NodeSpec[] nodes, ConnectionSpec[] connections) throws Refused {
+        Caller.require(Right.LOAD, moduleName);
         List<NodeInfo> infos = new ArrayList<>();
         for (NodeSpec spec : nodes) {
             NodeInfo node = IdlMapping.node(spec, hostName);
@@ -323,6 +362,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void unloadModule(String moduleName) {
+        Caller.require(Right.UNLOAD, moduleName);
         for (NodeRef ref : network.nodes()) {
             if (ref.module().equals(moduleName)) {
                 closeLinksOf(ref);
@@ -338,6 +378,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void acceptLink(long link, NodeId target, String fromHost) throws UnknownNode {
+        Caller.require(Right.RESHAPE, target.moduleName);
         requireNode(target);
         NodeRef ref = IdlMapping.ref(target);
         Map<String, Long> seen = seenByTarget.computeIfAbsent(ref, r -> new ConcurrentHashMap<>());
@@ -348,6 +389,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     @Override
     public void forward(long link, NodeId source, ValueSink sink, String toHost, int window)
             throws UnknownNode, Refused {
+        Caller.require(Right.RESHAPE, source.moduleName);
         requireNode(source);
         NodeRef ref = IdlMapping.ref(source);
         Forwarding existing = outbound.get(link);
@@ -389,6 +431,14 @@ public final class HostServant extends HostPOA implements AutoCloseable {
 
     @Override
     public void closeLink(long link) {
+        InboundLink open = inbound.get(link);
+        Forwarding sending = outbound.get(link);
+        if (open != null) {
+            Caller.require(Right.RESHAPE, open.target().module());
+        }
+        if (sending != null) {
+            Caller.require(Right.RESHAPE, sending.source.module());
+        }
         InboundLink in = inbound.remove(link);
         retire(in);
         Forwarding out = outbound.remove(link);
@@ -429,6 +479,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         if (in == null) {
             throw new UnknownLink(batch.link);
         }
+        in.requireWriter(Caller.name());
         return in.deliver(batch);
     }
 

@@ -4,6 +4,7 @@ import java.util.Map;
 import java.util.TreeMap;
 import org.fdnet.corba.idl.ValueBatch;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.tls.Right;
 
 /**
  * The receiving end of one cross-host link: applies batches to a local Data strictly in sequence order.
@@ -25,6 +26,8 @@ final class InboundLink {
     private long expected = UNSET;
     private long applied;
     private long duplicates;
+    /** The last caller found allowed to write {@link #target}: a link's batches come from one peer, checked once. */
+    private volatile String allowedWriter;
 
     InboundLink(long id, NodeRef target, String fromHost, LocalNetwork network, Map<String, Long> seen) {
         this.seen = seen;
@@ -40,6 +43,18 @@ final class InboundLink {
 
     NodeRef target() {
         return target;
+    }
+
+    /**
+     * Fails the delivery unless {@code caller} may write this link's target Data.
+     *
+     * @throws org.omg.CORBA.NO_PERMISSION naming the certificate, the Data and the right
+     */
+    void requireWriter(String caller) {
+        if (!caller.equals(allowedWriter)) {
+            Caller.require(Right.WRITE, target);
+            allowedWriter = caller;
+        }
     }
 
     /** Applies what can be applied and returns the next sequence number expected. */

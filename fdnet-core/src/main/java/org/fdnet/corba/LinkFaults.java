@@ -94,6 +94,11 @@ public final class LinkFaults {
         long deliver() throws org.fdnet.corba.idl.UnknownLink;
     }
 
+    /** Whether an injector is installed in this process (on or off): calls must then go through {@link #deliver}. */
+    static boolean armed() {
+        return installed != null;
+    }
+
     /** Makes {@code call}, through the injector when one is installed and on. */
     static long deliver(Call call) throws org.fdnet.corba.idl.UnknownLink {
         LinkFaults faults = installed;

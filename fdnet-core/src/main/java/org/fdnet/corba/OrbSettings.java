@@ -21,7 +21,8 @@ import org.fdnet.tls.TransportSecurity;
  * @param poaThreadsMax   threads serving requests
  *
  * <p>When this process speaks TLS ({@link TransportSecurity}), the ORB listens and connects with SSLIOP only,
- * mutual authentication required both ways: no plain IIOP port is opened.
+ * mutual authentication required both ways: no plain IIOP port is opened; every request it serves is checked against
+ * the network's permissions for the certificate of the connection that carries it ({@link CallerInterceptor}).
  */
 public record OrbSettings(String bindAddress, int port, String namingReference, int callTimeoutMillis,
                           int poaQueueMax, int poaThreadsMax) {
@@ -51,6 +52,7 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
     private static final String SUPPORT_SSL = "jacorb.security.support_ssl";
     private static final String SSL_SOCKET_FACTORY = "jacorb.ssl.socket_factory";
     private static final String SSL_SERVER_SOCKET_FACTORY = "jacorb.ssl.server_socket_factory";
+    private static final String ORB_INITIALIZER = "org.omg.PortableInterceptor.ORBInitializerClass.";
     private static final String[] SSL_OPTIONS = {"jacorb.security.ssl.client.supported_options",
             "jacorb.security.ssl.client.required_options", "jacorb.security.ssl.server.supported_options",
             "jacorb.security.ssl.server.required_options", "jacorb.security.ssl.corbaloc_ssliop.supported_options",
@@ -135,6 +137,7 @@ public record OrbSettings(String bindAddress, int port, String namingReference, 
             p.setProperty(SUPPORT_SSL, "on");
             p.setProperty(SSL_SOCKET_FACTORY, IiopTlsSocketFactory.class.getName());
             p.setProperty(SSL_SERVER_SOCKET_FACTORY, IiopTlsServerSocketFactory.class.getName());
+            p.setProperty(ORB_INITIALIZER + CallerInterceptor.Installer.class.getName(), "");
             for (String option : SSL_OPTIONS) {
                 p.setProperty(option, MUTUAL_TRUST);
             }

@@ -27,9 +27,13 @@ import org.slf4j.LoggerFactory;
  * After a (re)start only one batch is in flight until the peer has acknowledged one, so a fresh receiver
  * learns where the sequence stands before batches can overtake each other.
  *
- * <p>{@code offer} runs on the writer's thread under the engine's commit lock, so it only queues: a remote
- * call there would block the whole engine. To keep a lone value from paying for a thread wake-up, one
- * caller of an idle link watches for the next value for {@link LinkSettings#spinMicros()} before it parks.
+ * <p>{@code offer} runs on the writer's thread under the engine's commit lock, so it never waits for a reply:
+ * a blocking remote call there would stall the whole engine. When the link is idle — nothing in flight, the peer
+ * has acknowledged before, the value the only one waiting — the writer puts that value's call on the wire itself
+ * ({@link DirectDelivery}: a two-way call whose reply comes back on the ORB's reader thread), so a lone value does
+ * not pay for waking a sender thread; a reply that does not come within the ORB's reply timeout fails the call
+ * like a sender thread's ({@link DirectCallWatch} looks for overdue calls). Everything else goes through the {@code window} sender threads, and one caller of an
+ * idle link may watch for the next value for {@link LinkSettings#spinMicros()} before it parks.
  */
 public final class OutboundLink implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(OutboundLink.class);
@@ -76,6 +80,12 @@ public final class OutboundLink implements AutoCloseable {
     private boolean stallReported;
     private long generation;
     private ValueSink sink;
+    /** Sends an idle link's lone value from the writer's thread; {@code null} for a peer in this ORB. */
+    private DirectDelivery direct;
+    /** The call {@link #direct} has on the wire, settled by its reply or by its deadline. */
+    private Batch directPending;
+    private long directDeadlineNanos;
+    private long directCalls;
 
     /**
      * @param stream the identity values written locally get here (see {@link ValueOrigin}): unique per host
@@ -93,6 +103,10 @@ public final class OutboundLink implements AutoCloseable {
         this.originStreams = new String[settings.capacity()];
         this.originSeqs = new long[settings.capacity()];
         this.mask = settings.capacity() - 1;
+        this.direct = DirectDelivery.open(id, sink, directReplies());
+        if (direct != null) {
+            DirectCallWatch.watch(this);
+        }
         this.callers = new Thread[settings.window()];
         for (int i = 0; i < callers.length; i++) {
             callers[i] = new Thread(this::sendLoop, "fdnet-link-" + id + "-" + THREADS.incrementAndGet());
@@ -122,6 +136,8 @@ public final class OutboundLink implements AutoCloseable {
     /** Queues one value that entered the links at {@code origin} ({@code null}: written on this host). */
     public void offer(Object value, ValueOrigin origin) {
         boolean reportStall = false;
+        Batch directBatch = null;
+        DirectDelivery via = null;
         synchronized (lock) {
             while (!closed && tailSeq - headSeq == ring.length) {
                 long now = System.nanoTime();
@@ -156,13 +172,19 @@ public final class OutboundLink implements AutoCloseable {
             originSeqs[slot] = origin == null ? tailSeq : origin.seq();
             tailSeq++;
             offered = tailSeq;
-            if (waitingCallers > 0 && !watching) {
+            if (mayDeliverDirectly()) {
+                directBatch = takeBatch(true);
+                via = direct;
+            } else if (waitingCallers > 0 && !watching) {
                 if (writerWaiting) {
                     lock.notifyAll();
                 } else {
                     lock.notify();
                 }
             }
+        }
+        if (directBatch != null) {
+            sendDirectly(via, directBatch);
         }
         if (reportStall) {
             LOG.warn("link {}: the peer acknowledged nothing for {} ms with {} values waiting; dropping the oldest"
@@ -172,14 +194,24 @@ public final class OutboundLink implements AutoCloseable {
 
     /** Points the link at a new sink (its peer restarted); everything unacknowledged is sent again. */
     public void retarget(ValueSink newSink) {
+        DirectDelivery old;
         synchronized (lock) {
             sink = Objects.requireNonNull(newSink, "newSink");
+            old = direct;
+            direct = DirectDelivery.open(id, newSink, directReplies());
+            if (direct != null) {
+                DirectCallWatch.watch(this);
+            }
+            directPending = null; // its reply, if any, belongs to the old generation
             generation++;
             inFlight = 0; // calls to the old sink no longer count against the window
             sendSeq = headSeq;
             probing = true;
             broken = false;
             lock.notifyAll();
+        }
+        if (old != null) {
+            old.close();
         }
     }
 
@@ -203,6 +235,13 @@ public final class OutboundLink implements AutoCloseable {
         }
     }
 
+    /** Calls the writers' threads put on the wire themselves (an idle link's lone values). */
+    public long directCalls() {
+        synchronized (lock) {
+            return directCalls;
+        }
+    }
+
     /** Values the peer has acknowledged. */
     public long acknowledged() {
         synchronized (lock) {
@@ -215,6 +254,69 @@ public final class OutboundLink implements AutoCloseable {
         Batch batch;
         while ((batch = nextBatch()) != null) {
             call(batch);
+        }
+    }
+
+    /**
+     * Fails the direct call whose reply is overdue, if there is one. Its reply handler is retired with it and a
+     * new one takes its place, so a reply that comes after all (a partition healing) finds no handler instead of
+     * settling a later call.
+     */
+    void settleOverdueDirectCall() {
+        Batch overdue;
+        DirectDelivery retired;
+        int timeout;
+        synchronized (lock) {
+            if (directPending == null || closed || System.nanoTime() - directDeadlineNanos < 0) {
+                return;
+            }
+            overdue = directPending;
+            retired = direct;
+            timeout = retired.replyTimeoutMillis();
+            direct = DirectDelivery.open(id, sink, directReplies());
+        }
+        retired.close();
+        settle(overdue, -1, "no reply within " + timeout + " ms");
+    }
+
+    /** Under the lock: the link is idle, so the value just offered may go from the writer's thread. */
+    private boolean mayDeliverDirectly() {
+        return direct != null && directPending == null && inFlight == 0 && !probing && !broken
+                && sendSeq == tailSeq - 1 && !LinkFaults.armed();
+    }
+
+    /** Outside the lock, on the writer's thread: puts the call on the wire; its reply settles it. */
+    private void sendDirectly(DirectDelivery via, Batch batch) {
+        try {
+            via.send(batch.target(), delivery(batch));
+        } catch (SystemException e) {
+            settle(batch, -1, DirectDelivery.failure(e, id));
+        }
+    }
+
+    private DirectDelivery.Replies directReplies() {
+        return new DirectDelivery.Replies() {
+            @Override
+            public void replied(long expected) {
+                Batch batch = pendingDirect();
+                if (batch != null) {
+                    settle(batch, expected, null);
+                }
+            }
+
+            @Override
+            public void failed(String reason) {
+                Batch batch = pendingDirect();
+                if (batch != null) {
+                    settle(batch, -1, reason);
+                }
+            }
+        };
+    }
+
+    private Batch pendingDirect() {
+        synchronized (lock) {
+            return directPending;
         }
     }
 
@@ -240,7 +342,7 @@ public final class OutboundLink implements AutoCloseable {
                     return null;
                 }
                 if (readyToSend()) {
-                    Batch batch = takeBatch();
+                    Batch batch = takeBatch(false);
                     if (waitingCallers > 0 && readyToSend()) {
                         lock.notify(); // values offered during a watch were not announced: share them out
                     }
@@ -285,7 +387,7 @@ public final class OutboundLink implements AutoCloseable {
     }
 
     /** Under the lock: the next batch, cut where the origin stream or its numbering changes. */
-    private Batch takeBatch() {
+    private Batch takeBatch(boolean sentDirectly) {
         int max = (int) Math.min(tailSeq - sendSeq, settings.batchMax());
         int first = (int) (sendSeq & mask);
         String originStream = originStreams[first];
@@ -302,15 +404,21 @@ public final class OutboundLink implements AutoCloseable {
         for (int i = 0; i < n; i++) {
             values[i] = ring[(int) ((sendSeq + i) & mask)];
         }
-        Batch batch = new Batch(sink, generation, sendSeq, originStream, originFirstSeq, values);
+        Batch batch = new Batch(sink, generation, sendSeq, originStream, originFirstSeq, values, sentDirectly);
         sendSeq += n;
         inFlight++;
+        if (sentDirectly) {
+            directPending = batch;
+            directCalls++;
+            int timeout = direct.replyTimeoutMillis();
+            directDeadlineNanos = System.nanoTime() + (timeout > 0 ? timeout : Integer.MAX_VALUE) * 1_000_000L;
+        }
         return batch;
     }
 
     /** One call's worth: consecutive values of one origin stream, for the sink of one generation. */
     private record Batch(ValueSink target, long generation, long firstSeq, String originStream, long originFirstSeq,
-                         Object[] values) {
+                         Object[] values, boolean sentDirectly) {
     }
 
     private boolean readyToSend() {
@@ -323,29 +431,40 @@ public final class OutboundLink implements AutoCloseable {
         return inFlight < (probing ? 1 : settings.window());
     }
 
-    private void call(Batch batch) {
+    private ValueBatch delivery(Batch batch) {
         Object[] values = batch.values();
-        long firstSeq = batch.firstSeq();
         Value[] encoded = new Value[values.length];
         for (int i = 0; i < values.length; i++) {
             encoded[i] = ValueCodec.encode(values[i]);
         }
+        return new ValueBatch(id, batch.firstSeq(), batch.originStream(), batch.originFirstSeq(), encoded);
+    }
+
+    private void call(Batch batch) {
+        ValueBatch delivery = delivery(batch);
         long expected;
         String failure;
         try {
-            ValueBatch delivery = new ValueBatch(id, firstSeq, batch.originStream(), batch.originFirstSeq(), encoded);
             expected = LinkFaults.deliver(() -> batch.target().deliver(delivery));
             failure = null;
-        } catch (UnknownLink e) {
+        } catch (UnknownLink | SystemException e) {
             expected = -1;
-            failure = "the peer does not know link " + id + " (it restarted and is not re-wired yet)";
-        } catch (SystemException e) {
-            expected = -1;
-            failure = e.getClass().getSimpleName() + " " + e.getMessage();
+            failure = DirectDelivery.failure(e, id);
         }
+        settle(batch, expected, failure);
+    }
+
+    /** A call's outcome: acknowledges its values, or breaks the link and rewinds it ({@code failure != null}). */
+    private void settle(Batch batch, long expected, String failure) {
         boolean restored = false;
         boolean newlyBroken = false;
         synchronized (lock) {
+            if (batch.sentDirectly()) {
+                if (directPending != batch) {
+                    return; // settled already: its deadline passed, or the link was re-pointed
+                }
+                directPending = null;
+            }
             if (batch.generation() == generation) {
                 inFlight--;
                 if (failure == null) {
@@ -394,9 +513,16 @@ public final class OutboundLink implements AutoCloseable {
 
     @Override
     public void close() {
+        DirectDelivery last;
+        DirectCallWatch.forget(this);
         synchronized (lock) {
             closed = true;
+            last = direct;
+            direct = null;
             lock.notifyAll();
+        }
+        if (last != null) {
+            last.close();
         }
         for (Thread t : callers) {
             t.interrupt();

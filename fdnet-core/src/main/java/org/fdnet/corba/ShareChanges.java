@@ -3,6 +3,8 @@ package org.fdnet.corba;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
 import org.fdnet.corba.idl.ModuleConnection;
@@ -33,6 +35,31 @@ final class ShareChanges {
         this.hostName = hostName;
         this.network = network;
         this.policy = policy;
+    }
+
+    /** Every module {@code change} touches: where its nodes, stand-ins and connections are. */
+    static Set<String> modules(ShareChange change) {
+        Set<String> modules = new TreeSet<>();
+        for (ModuleConnection c : change.disconnect) {
+            modules.add(c.moduleName);
+            modules.add(c.connection.data.moduleName);
+            modules.add(c.connection.relation.moduleName);
+        }
+        for (ModuleConnection c : change.connect) {
+            modules.add(c.moduleName);
+            modules.add(c.connection.data.moduleName);
+            modules.add(c.connection.relation.moduleName);
+        }
+        for (NodeId gone : change.destroy) {
+            modules.add(gone.moduleName);
+        }
+        for (StandInSpec standIn : change.standIns) {
+            modules.add(standIn.spec.id.moduleName);
+        }
+        for (NodeSpec made : change.create) {
+            modules.add(made.id.moduleName);
+        }
+        return modules;
     }
 
     /** The reason this host cannot execute {@code change}, or {@code ""}; a possible change is kept. */

@@ -18,8 +18,9 @@
  * calls with at most {@link org.fdnet.corba.LinkSettings#window()} in flight (a oneway flood overflows
  * JacORB's POA queue and drops calls); sequence numbers keep them in order, and a value leaves the sender
  * only when the receiver has applied it, so a restarted receiver gets everything it missed. The engine hands
- * values to a link under its commit lock, so a link only queues them there; an idle link's sender watches
- * for the next one briefly instead of parking, so a lone value does not wait for a thread wake-up.
+ * values to a link under its commit lock, so a link never waits for a reply there: an idle link's lone value
+ * goes on the wire from the writer's thread as an asynchronous two-way call ({@link org.fdnet.corba.DirectDelivery},
+ * its reply read on the ORB's reader thread), everything else through the link's sender threads.
  *
  * <p>Class map: {@link org.fdnet.corba.OrbRuntime} starts ORBs (JDK 17 fixes) from
  * {@link org.fdnet.corba.OrbSettings} (every JacORB key); {@link org.fdnet.corba.NamingService} runs
@@ -55,5 +56,14 @@
  *   host engine ─▶ HostTrace [≤ capacity; full: drop, count] ◀─takeTrace─ TraceCollector (fdnet run) ─▶ TraceOutput
  * </pre>
  * The run's life around a deployment is {@code org.fdnet.run}'s.
+ *
+ * <p>Permissions (with TLS): every request is checked against the network's signed permissions for the certificate of
+ * the connection that carries it, before the servant changes or reveals anything.
+ * <pre>
+ *   request ─▶ CallerInterceptor (TLS session of its connection ─▶ certificate name, kept in the session)
+ *           ─▶ HostServant / CoordinatorServant / RunningNetworkImpl ─▶ Caller.require(right, node or module)
+ *                 allowed: as before        refused: NO_PERMISSION (or a refused change) naming certificate,
+ *                                                    node or module and right; nothing applied
+ * </pre>
  */
 package org.fdnet.corba;

@@ -1,10 +1,14 @@
 package org.fdnet.tls;
 
 import java.io.IOException;
+import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.security.GeneralSecurityException;
+import java.security.KeyStore;
+import java.security.PrivateKey;
 import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.HexFormat;
@@ -22,7 +26,9 @@ import java.util.regex.Pattern;
  *
  * <p>Files: {@code ca.p12} (the CA's key: whoever holds it can admit new processes, so keep it off the robots),
  * {@code NAME.p12} per process (its key, its certificate, the CA certificate as trusted entry), {@code password}.
- * Existing files are kept: running it again with new names adds processes to the same network.
+ * {@code permissions} (with {@code permissions.sig}, the CA's signature) says who may do what ({@link Permissions}); its
+ * default allows everything to every member. Existing files are kept: running it again with new names adds processes
+ * to the same network.
  */
 public final class KeyMaker {
     private static final Pattern NAME = Pattern.compile("[A-Za-z0-9][A-Za-z0-9._-]*");
@@ -77,6 +83,9 @@ public final class KeyMaker {
             keytool(password, "-exportcert", "-rfc", "-alias", CA_ALIAS, "-keystore", caStore.toString(),
                     "-file", caPem.toString());
         }
+        if (PermissionsFile.writeDefault(dir, caKey(caStore, password))) {
+            made.add(dir.resolve(PermissionsFile.FILE));
+        }
         ExecutorService pool = Executors.newFixedThreadPool(Math.max(1, Runtime.getRuntime().availableProcessors()));
         try {
             List<Future<Path>> jobs = new ArrayList<>();
@@ -95,6 +104,39 @@ public final class KeyMaker {
             pool.shutdownNow();
         }
         return made;
+    }
+
+    /**
+     * Signs the network's {@code permissions} file again with the CA's key, after it was edited.
+     *
+     * @return the signature file
+     * @throws IOException              when the CA's store, the password or the file cannot be read, or the signature
+     *                                  cannot be written
+     * @throws IllegalArgumentException when the file is not valid ({@code FILE:LINE: what}); nothing is signed then
+     */
+    public Path signPermissions() throws IOException {
+        Path caStore = dir.resolve(CA + ".p12");
+        if (!Files.isRegularFile(caStore)) {
+            throw new IOException("cannot sign " + dir.resolve(PermissionsFile.FILE) + ": the CA's store " + caStore
+                    + " is not here (sign where the network's keys were made)");
+        }
+        if (!Files.isRegularFile(dir.resolve(PermissionsFile.FILE))) {
+            throw new IOException("cannot sign " + dir.resolve(PermissionsFile.FILE) + ": there is no such file");
+        }
+        return PermissionsFile.sign(dir, caKey(caStore, password()));
+    }
+
+    private static PrivateKey caKey(Path caStore, String password) throws IOException {
+        try (InputStream in = Files.newInputStream(caStore)) {
+            KeyStore ks = KeyStore.getInstance("PKCS12");
+            ks.load(in, password.toCharArray());
+            if (ks.getKey(CA_ALIAS, password.toCharArray()) instanceof PrivateKey key) {
+                return key;
+            }
+            throw new IOException(caStore + " holds no CA key '" + CA_ALIAS + "'");
+        } catch (GeneralSecurityException e) {
+            throw new IOException("cannot read the CA's key from " + caStore + ": " + e.getMessage(), e);
+        }
     }
 
     /**

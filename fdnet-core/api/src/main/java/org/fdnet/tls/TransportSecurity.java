@@ -24,6 +24,7 @@ import org.slf4j.LoggerFactory;
 public final class TransportSecurity {
     private static final Logger LOG = LoggerFactory.getLogger(TransportSecurity.class);
     private static final String[] PROTOCOLS = {"TLSv1.3"};
+    private static final Permissions ALLOW_ALL = Permissions.allowAll();
     private static volatile TlsIdentity identity;
 
     private TransportSecurity() {
@@ -51,6 +52,17 @@ public final class TransportSecurity {
      */
     public static Optional<TlsIdentity> current() {
         return Optional.ofNullable(identity);
+    }
+
+    /**
+     * Who may do what: the network's signed permissions with TLS; without it no certificate names a caller, and
+     * everything is allowed, as before permissions existed.
+     *
+     * @return the grants this process enforces on its callers
+     */
+    public static Permissions permissions() {
+        TlsIdentity tls = identity;
+        return tls == null ? ALLOW_ALL : tls.permissions();
     }
 
     /**

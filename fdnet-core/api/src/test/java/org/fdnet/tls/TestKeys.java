@@ -2,6 +2,8 @@ package org.fdnet.tls;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
@@ -23,6 +25,22 @@ public final class TestKeys {
     /** A certificate of another network (its own CA): {@code intruder}. */
     public static synchronized Path foreign() {
         return make("foreign", List.of("intruder")).store("intruder");
+    }
+
+    /**
+     * The folder of a network whose {@code permissions} file is {@code permissions}, signed by its CA, with a
+     * {@code NAME.p12} for each of {@code names}; made when first asked for (each test names its own folder).
+     */
+    public static synchronized Path withPermissions(String folder, String permissions, List<String> names) {
+        KeyMaker maker = make(folder, names);
+        Path dir = ROOT.resolve(folder);
+        try {
+            Files.writeString(dir.resolve(PermissionsFile.FILE), permissions, StandardCharsets.UTF_8);
+            maker.signPermissions();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        return dir;
     }
 
     private static KeyMaker make(String folder, List<String> names) {

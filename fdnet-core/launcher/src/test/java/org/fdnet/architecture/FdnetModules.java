@@ -48,9 +48,9 @@ final class FdnetModules {
         Map<String, List<String>> trees = new LinkedHashMap<>();
         trees.put("fdnet-core/api", List.of("org.fdnet.cli.spi", "org.fdnet.event", "org.fdnet.layout",
                 "org.fdnet.netinfo", "org.fdnet.runtime", "org.fdnet.tls"));
-        trees.put("fdnet-core", List.of("org.fdnet.cli", "org.fdnet.control", "org.fdnet.corba", "org.fdnet.logging",
-                "org.fdnet.netinfo.xml", "org.fdnet.run", "org.fdnet.runtime.cli", "org.fdnet.runtime.engine",
-                "org.fdnet.runtime.library", "org.fdnet.runtime.loading"));
+        trees.put("fdnet-core", List.of("org.fdnet.apart", "org.fdnet.cli", "org.fdnet.control", "org.fdnet.corba",
+                "org.fdnet.logging", "org.fdnet.netinfo.xml", "org.fdnet.run", "org.fdnet.runtime.cli",
+                "org.fdnet.runtime.engine", "org.fdnet.runtime.library", "org.fdnet.runtime.loading"));
         trees.put("fdnet-logger", List.of("org.fdnet.logger"));
         trees.put("fdnet-viewer", List.of("org.fdnet.viewer"));
         trees.put("fdnet-hi", List.of("org.fdnet.hi"));

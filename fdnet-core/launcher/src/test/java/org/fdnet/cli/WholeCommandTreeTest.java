@@ -15,9 +15,11 @@ class WholeCommandTreeTest {
     @Test
     void shouldOfferEveryPartsCommands() {
         assertThat(fdnet.getSubcommands()).containsKeys("validate", "info", "fmt", "keys", "run", "naming", "host",
-                "control", "logger", "export", "viewer", "hi", "sim", "demo", "soak", "bench", "sdk", "new");
+                "control", "logger", "export", "viewer", "hi", "sim", "demo", "soak", "bench", "sdk", "new", "apart");
         assertThat(fdnet.getSubcommands().get("sdk").getSubcommands()).containsKey("install");
         assertThat(fdnet.getSubcommands().get("new").getSubcommands()).containsKey("nodes");
+        assertThat(fdnet.getSubcommands().get("apart").getSubcommands())
+                .containsOnlyKeys("up", "exec", "fault", "status", "down", "sweep");
     }
 
     @Test

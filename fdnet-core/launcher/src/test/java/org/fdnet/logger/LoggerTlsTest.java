@@ -10,6 +10,7 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.net.Socket;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.UUID;
 import java.util.concurrent.TimeUnit;
 import javax.net.ssl.SSLException;
@@ -18,7 +19,11 @@ import org.fdnet.cli.FdnetCommand;
 import org.fdnet.event.client.LoggerClient;
 import org.fdnet.event.client.LoggerClientSettings;
 import org.fdnet.event.client.ViewerClient;
+import org.fdnet.event.wire.ErrorFrame;
+import org.fdnet.event.wire.Frame;
+import org.fdnet.event.wire.FrameReader;
 import org.fdnet.event.wire.FrameWriter;
+import org.fdnet.event.wire.MessageType;
 import org.fdnet.event.wire.Hello;
 import org.fdnet.tls.TestKeys;
 import org.fdnet.tls.TlsIdentity;
@@ -33,7 +38,8 @@ import picocli.CommandLine;
 /**
  * The logger with mutual TLS: a raw TCP client and a client with another network's certificate are refused on both
  * ports before the logger reads a frame, and store nothing; a core and a viewer with the network's certificate work.
- * Off loopback, the logger, a host and the naming service refuse to start without TLS unless told --insecure.
+ * A core whose certificate the network's permissions do not let record is refused at its HELLO with the reason. Off
+ * loopback, the logger, a host and the naming service refuse to start without TLS unless told --insecure.
  */
 @Timeout(value = 120, unit = TimeUnit.SECONDS)
 class LoggerTlsTest {
@@ -76,6 +82,21 @@ class LoggerTlsTest {
     }
 
     @Test
+    void shouldRefuseAtTheHelloACoreWhoseCertificateMayNotRecord() throws Exception {
+        Path keys = TestKeys.withPermissions("permissions-record", "*  read  *\nlogger  record\ncore  record\n",
+                List.of("logger", "core", "viewer"));
+        TransportSecurity.use(TlsIdentity.load(keys.resolve("logger.p12")));
+        try (NetworkStateLogger logger = new NetworkStateLogger(database.fixture().loggerConfig())) {
+            logger.start();
+            Frame refused = helloAs(TlsIdentity.load(keys.resolve("viewer.p12")), logger.receiverPort());
+            assertThat(refused.type()).isEqualTo(MessageType.ERROR);
+            assertThat(ErrorFrame.read(refused).message()).contains("certificate 'viewer' may not record");
+            Frame welcomed = helloAs(TlsIdentity.load(keys.resolve("core.p12")), logger.receiverPort());
+            assertThat(welcomed.type()).as("a certificate allowed to record").isEqualTo(MessageType.WELCOME);
+        }
+    }
+
+    @Test
     void shouldRefuseToListenOffLoopbackWithoutTlsUnlessInsecure() {
         String elsewhere = "192.0.2.7"; // TEST-NET-1: checked before anything binds, so it need not be this machine's
         for (String[] command : new String[][] {{"logger", "--bind", elsewhere}, {"naming", "--bind", elsewhere},
@@ -106,6 +127,20 @@ class LoggerTlsTest {
             } catch (IOException closed) {
                 return false;
             }
+        }
+    }
+
+    /** Sends a core's HELLO over TLS as {@code identity}; the logger's first answer. */
+    private static Frame helloAs(TlsIdentity identity, int port) throws IOException {
+        try (SSLSocket s = (SSLSocket) identity.context().getSocketFactory().createSocket("127.0.0.1", port)) {
+            s.setSoTimeout(10_000);
+            FrameWriter w = new FrameWriter();
+            Hello.core(UUID.randomUUID(), "core-" + identity.name()).write(w);
+            w.writeTo(s.getOutputStream());
+            s.getOutputStream().flush();
+            Frame answer = new FrameReader(s.getInputStream(), 1 << 20).read();
+            assertThat(answer).as("an answer to the HELLO").isNotNull();
+            return answer;
         }
     }
 

@@ -1,11 +1,14 @@
 package org.fdnet.corba.control;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ThreadLocalRandom;
 import org.fdnet.control.LiveNetwork;
 import org.fdnet.control.LiveNetworkListener;
+import org.fdnet.corba.Caller;
 import org.fdnet.corba.IdlMapping;
 import org.fdnet.corba.ValueCodec;
 import org.fdnet.corba.idl.ChangeResult;
@@ -19,6 +22,9 @@ import org.fdnet.netinfo.xml.NetworkFileException;
 import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.runtime.ChangeOutcome;
 import org.fdnet.runtime.Value;
+import org.fdnet.tls.Permissions;
+import org.fdnet.tls.Right;
+import org.fdnet.tls.TransportSecurity;
 import org.omg.CORBA.ORB;
 import org.omg.CORBA.SystemException;
 import org.slf4j.Logger;
@@ -29,6 +35,11 @@ import org.slf4j.LoggerFactory;
  * call goes to a {@link LiveNetwork}, so the same servant serves a run in one process and a run across hosts.
  * Definitions travel as .fdn text and are validated on the way in as every .fdn file is. Each subscribed
  * listener is told on the subscription's own thread; one whose call fails is dropped.
+ *
+ * <p>The calling tool's certificate ({@link Caller}) needs {@code reshape} on every module an edit changes, {@code
+ * load}, {@code unload} or {@code reshape} (hold, resume, parameters) on the module, {@code write} to send a value; a
+ * change it may not make is refused with the reason, and nothing changes. A subscriber is sampled only the Datas its
+ * certificate may {@code read}.
  */
 public final class RunningNetworkImpl extends RunningNetworkPOA {
     private static final Logger LOG = LoggerFactory.getLogger(RunningNetworkImpl.class);
@@ -83,46 +94,55 @@ public final class RunningNetworkImpl extends RunningNetworkPOA {
         } catch (NetworkFileException e) {
             return result(ChangeOutcome.failed(description, "not a valid network: " + e.getMessage()));
         }
+        String refusal = Caller.refusalToEdit(network.snapshot(), edited);
+        if (refusal == null) {
+            refusal = Caller.refusalToEdit(base, edited);
+        }
+        if (refusal != null) {
+            return refused(description, refusal);
+        }
         return result(guarded(description, () -> network.apply(description, base, edited)));
     }
 
     @Override
     public ChangeResult load(String moduleName) {
-        return result(guarded("load " + moduleName, () -> network.load(moduleName)));
+        return permitted(Right.LOAD, moduleName, "load " + moduleName, () -> network.load(moduleName));
     }
 
     @Override
     public ChangeResult unload(String moduleName) {
-        return result(guarded("unload " + moduleName, () -> network.unload(moduleName)));
+        return permitted(Right.UNLOAD, moduleName, "unload " + moduleName, () -> network.unload(moduleName));
     }
 
     @Override
     public ChangeResult hold(String moduleName) {
-        return result(guarded("hold " + moduleName, () -> network.hold(moduleName)));
+        return permitted(Right.RESHAPE, moduleName, "hold " + moduleName, () -> network.hold(moduleName));
     }
 
     @Override
     public ChangeResult resume(String moduleName) {
-        return result(guarded("resume " + moduleName, () -> network.resume(moduleName)));
+        return permitted(Right.RESHAPE, moduleName, "resume " + moduleName, () -> network.resume(moduleName));
     }
 
     @Override
     public ChangeResult setParameter(NodeId node, String parameter, String text) {
         NodeRef ref = IdlMapping.ref(node);
-        return result(guarded("set " + ref + ":" + parameter + "=" + text,
-                () -> network.setParameter(ref, parameter, text)));
+        return permitted(Right.RESHAPE, ref.module(), "set " + ref + ":" + parameter + "=" + text,
+                () -> network.setParameter(ref, parameter, text));
     }
 
     @Override
     public ChangeResult send(NodeId data, String text) {
         NodeRef ref = IdlMapping.ref(data);
-        return result(guarded("send " + ref + "=" + text, () -> network.send(ref, text)));
+        String description = "send " + ref + "=" + text;
+        String refusal = Caller.refusal(Right.WRITE, ref);
+        return refusal != null ? refused(description, refusal) : result(guarded(description, () -> network.send(ref, text)));
     }
 
     @Override
     public void subscribe(RunningNetworkListener listener) {
         String key = orb.object_to_string(listener);
-        Forwarder f = new Forwarder(key, listener);
+        Forwarder f = new Forwarder(key, listener, Caller.name());
         Forwarder old = subscribers.put(key, f);
         if (old != null) {
             old.end();
@@ -156,6 +176,17 @@ public final class RunningNetworkImpl extends RunningNetworkPOA {
         ChangeOutcome run();
     }
 
+    /** A change of a module, made when the caller's certificate has {@code right} on it, else refused with why. */
+    private ChangeResult permitted(Right right, String module, String description, Change change) {
+        String refusal = Caller.refusal(right, module);
+        return refusal != null ? refused(description, refusal) : result(guarded(description, change));
+    }
+
+    private ChangeResult refused(String description, String refusal) {
+        LOG.info("{}: refused {}: {}", network.name(), description, refusal);
+        return result(ChangeOutcome.failed(description, refusal + "; nothing changed"));
+    }
+
     /** A change that throws (a bug, or a network that stopped meanwhile) is a refusal with the reason, not a CORBA error. */
     private ChangeOutcome guarded(String description, Change change) {
         try {
@@ -174,11 +205,14 @@ public final class RunningNetworkImpl extends RunningNetworkPOA {
     private final class Forwarder implements LiveNetworkListener {
         final String key;
         final RunningNetworkListener listener;
+        /** The subscriber's certificate: it is sampled only the Datas that may read. */
+        final String reader;
         volatile AutoCloseable handle;
 
-        Forwarder(String key, RunningNetworkListener listener) {
+        Forwarder(String key, RunningNetworkListener listener, String reader) {
             this.key = key;
             this.listener = listener;
+            this.reader = reader;
         }
 
         @Override
@@ -188,12 +222,18 @@ public final class RunningNetworkImpl extends RunningNetworkPOA {
 
         @Override
         public void valuesSampled(Map<NodeRef, Value> latest) {
-            SampledValue[] values = new SampledValue[latest.size()];
-            int i = 0;
+            Permissions permissions = TransportSecurity.permissions();
+            List<SampledValue> values = new ArrayList<>(latest.size());
             for (Map.Entry<NodeRef, Value> e : latest.entrySet()) {
-                values[i++] = new SampledValue(IdlMapping.id(e.getKey()), ValueCodec.encode(e.getValue()));
+                NodeRef ref = e.getKey();
+                if (permissions.refusal(reader, Right.READ, ref.module(), ref.node()) == null) {
+                    values.add(new SampledValue(IdlMapping.id(ref), ValueCodec.encode(e.getValue())));
+                }
             }
-            tell(() -> listener.valuesSampled(values));
+            if (!values.isEmpty() || latest.isEmpty()) {
+                SampledValue[] sampled = values.toArray(SampledValue[]::new);
+                tell(() -> listener.valuesSampled(sampled));
+            }
         }
 
         @Override

@@ -23,6 +23,9 @@ import org.fdnet.logger.cache.EventCache;
 import org.fdnet.logger.cache.RunProgress;
 import org.fdnet.logger.store.QueryPriority;
 import org.fdnet.logger.store.SourceDirectory;
+import org.fdnet.tls.PeerCertificate;
+import org.fdnet.tls.Right;
+import org.fdnet.tls.TransportSecurity;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -33,7 +36,8 @@ import org.slf4j.LoggerFactory;
  * once per node), and events the run already delivered are skipped (a reconnecting core sends again what was
  * not acknowledged). Before each frame it waits
  * while the cache is at its critical level: the socket is not read, and TCP pushes back on the core.
- * The writer's commits come back as ACK frames.
+ * The writer's commits come back as ACK frames. Over TLS, a core whose certificate may not {@code record} (the network's
+ * permissions) is refused at the handshake with the reason, and nothing it sends is read.
  */
 final class ReceiverConnection extends Connection {
     private static final Logger LOG = LoggerFactory.getLogger(ReceiverConnection.class);
@@ -65,6 +69,13 @@ final class ReceiverConnection extends Connection {
     protected boolean handshake(Hello hello) throws IOException {
         if (hello.role() != Protocol.ROLE_CORE) {
             throw new ProtocolException("the receiver server serves cores; use the sender port for viewers");
+        }
+        String peer = PeerCertificate.name(socket);
+        String refusal = peer == null ? null : TransportSecurity.permissions().refusal(peer, Right.RECORD, "");
+        if (refusal != null) {
+            LOG.warn("refusing core {}: {}", describe(), refusal);
+            refuse(ErrorCode.BAD_REQUEST, "this logger does not record your events: " + refusal);
+            return false;
         }
         try {
             run = directory.openRun(hello.run(), hello.name());

@@ -79,7 +79,7 @@ public final class BenchHiCommand implements Callable<Integer> {
         NetworkInfo network = NetworkRepository.load(file);
         double[] elk = new double[runs];
         double[] open = new double[runs];
-        out.println("timing the first (cold) open + layout and the bare ELK call ...");
+        out.println("JIT: " + jitMode() + "; timing the first (cold) open + layout and the bare ELK call ...");
         out.flush();
         double openFirst = millis(() -> OpenNetwork.load(file));
         double elkFirst = millis(() -> ElkLayeredLayout.positions(network, r -> new NodeSize(120, 40)));
@@ -104,6 +104,15 @@ public final class BenchHiCommand implements Callable<Integer> {
                 verdict(Math.max(openFirst, median(open)) <= 2000), openFirst, median(open), verdict(Math.min(fps, fpsClose) >= 30));
         out.flush();
         return 0;
+    }
+
+    /** Which compilers this JVM runs: the launcher stops the editor's at C1 (see bin/fdnet). */
+    private static String jitMode() {
+        return java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments().stream()
+                .filter(arg -> arg.startsWith("-XX:TieredStopAtLevel="))
+                .reduce((first, last) -> last)
+                .map(arg -> arg.endsWith("=1") ? "C1 only (" + arg + ")" : "tiered (" + arg + ")")
+                .orElse("tiered C1 + C2 (the JVM's default)");
     }
 
     /** Selects 20 nodes and, frame after frame, moves them and paints the whole canvas. */

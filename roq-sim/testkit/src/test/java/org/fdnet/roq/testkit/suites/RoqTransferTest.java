@@ -67,8 +67,8 @@ class RoqTransferTest {
 
     /**
      * The crossing course, 100 s, noise on. Bounds from {@code bench roq --part breakthroughs} over noise seeds 1–24:
-     * no fall in any run; at most one loaded-foot breakthrough a run (3 runs of 24 had one, under a foot that had slid
-     * or a swinging one); walked 2.72 m median, 2.24 m least — the bound 2.15 m is 21 % below the median.
+     * no fall in any run; at most one loaded-foot breakthrough a run (3 runs of 24 had one, each under a standing foot
+     * that had slid); walked 3.23 m median, 2.91 m least — the bound 2.55 m is 21 % below the median.
      */
     @Test
     void shouldCrossTheFragileBandsWithoutFallingAndAtMostOneLoadedFootBreakthroughARun() {
@@ -80,7 +80,7 @@ class RoqTransferTest {
                 assertThat(m.probeBroken()).as("crusts broken while being proved, noise %d", noise).isPositive();
                 assertThat(m.loadedBreakthroughs()).as("loaded-foot breakthroughs, noise %d: %s", noise, m)
                         .isLessThanOrEqualTo(1);
-                assertThat(m.distance()).as("metres walked, noise %d", noise).isGreaterThan(2.15);
+                assertThat(m.distance()).as("metres walked, noise %d", noise).isGreaterThan(2.55);
             }
         }
     }

@@ -2,7 +2,8 @@ package org.fdnet.roq.node;
 
 /**
  * The swing trajectory of one foot, in the gait's ground frame (x, y on the ground, z the foot's height in the body
- * frame): it first <b>rises</b> straight up until its sole has left the ground and it is {@code clearance}/3 up (a
+ * frame): it first <b>rises</b> straight up (at most {@code clearance}) until its sole has left the ground and it is
+ * {@code clearance}/3 up (a
  * foot that went forward while still bearing load was driven into whatever stood before it), then <b>moves</b> over
  * to above its foothold, {@code clearance} above the higher of the two grounds, and then <b>descends</b> at
  * {@code descent} m/s until its sole finds the ground — or has gone {@code depth} m below where the ground was
@@ -60,7 +61,7 @@ final class SwingPath {
     Stage advance(double dt, boolean liftedOff, boolean touches) {
         switch (stage) {
             case RISE -> {
-                z += riseSpeed * dt;
+                z = Math.min(fromZ + clearance, z + riseSpeed * dt);
                 if (liftedOff && z - fromZ >= clearance / 3) {
                     stage = Stage.MOVE;
                     fromZ = z;

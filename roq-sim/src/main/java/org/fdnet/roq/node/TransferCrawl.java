@@ -65,6 +65,8 @@ public class TransferCrawl extends Relation {
     private static final double THERE = 0.005;
     /** The longest a shift waits for the margin before the crawl goes on regardless, s. */
     private static final double MOST_SHIFT_WAIT = 3;
+    /** The longest a foot rises waiting for its sole to come free before the lift is given up, s. */
+    private static final double MOST_RISE = 1.0;
     /** A sole under this carries nothing; a sole at this has found the ground, N. */
     private static final double FREE = 6;
     private static final double TOUCH = 20;
@@ -174,6 +176,8 @@ public class TransferCrawl extends Relation {
     private boolean replacing;
     private long rejected;
     private long slips;
+    /** Lifts given up because the rising foot never came free. */
+    private long stuckLifts;
 
     @Override
     protected void init(NodeParameters p) {
@@ -278,7 +282,13 @@ public class TransferCrawl extends Relation {
             }
             case SWING -> {
                 SwingPath.Stage s = path.advance(dt, soles.liftedOff(leg), soles.touchedDown(leg));
-                if (s == SwingPath.Stage.DOWN) {
+                if (s == SwingPath.Stage.RISE && stateTime > MOST_RISE) {
+                    // the body sags onto the rising leg: the weight is not off it after all; set it back down, shift
+                    stuckLifts++;
+                    c.report("leg " + leg + " still bore load " + MOST_RISE + " s into its rise; set back down ("
+                            + stuckLifts + " so far)");
+                    to(State.SHIFT);
+                } else if (s == SwingPath.Stage.DOWN) {
                     setDown(leg);
                 } else if (s == SwingPath.Stage.NO_FOOTING) {
                     noFooting(c, leg);

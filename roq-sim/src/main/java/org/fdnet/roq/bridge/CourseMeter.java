@@ -3,6 +3,7 @@ package org.fdnet.roq.bridge;
 import java.util.List;
 import java.util.Locale;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.roq.node.GaitPhase;
 import org.fdnet.roq.sim.FragileCell;
 import org.fdnet.roq.sim.RoqGeometry;
 import org.fdnet.roq.sim.SensorSnapshot;
@@ -69,10 +70,8 @@ public final class CourseMeter {
     /** Takes one sample (every 10 ms): {@code s} now and the network whose gait phase tells a probe's press. */
     public void sample(SensorSnapshot s, RuntimeNetwork network) {
         if (causes.hasCells()) {
-            Value phase = phase(network);
-            boolean probing = presses(phase);
-            boolean up = phase != null && phase.length() >= 2 && (phase.element(1) > 0 || probing);
-            causes.sample(feetInWorld(s), up ? (int) phase.element(0) : -1, brokenCells(s), probing);
+            GaitPhase phase = GaitPhase.of(phase(network));
+            causes.sample(feetInWorld(s), phase.upLeg(), brokenCells(s), phase.proving());
         }
         sample(s.groundTruthBodyPosition(1), s.groundTruthYaw());
     }
@@ -116,9 +115,9 @@ public final class CourseMeter {
         return presses(phase(network));
     }
 
-    /** Whether gait phase {@code phase} {leg, in the air, probe attempt} says a probe presses (false for null). */
+    /** Whether {@code phase} says a probe presses or a foothold is being proved (false for null). */
     private static boolean presses(Value phase) {
-        return phase != null && phase.length() == 3 && phase.element(2) > 0;
+        return GaitPhase.of(phase).proving();
     }
 
     /** {@code network}'s gait phase, or null without one. */

@@ -256,10 +256,14 @@ public final class DemoCommand implements Callable<Integer> {
                 window.close();
             }
         }
-        System.out.printf(Locale.ROOT, "summary: walked %.3f m forward (%.3f m sideways) in %.1f s; %s; smallest stability"
-                        + " margin %s; probes %s; fragile cells found %s, avoided %s, broken %d%n",
-                s.groundTruthBodyPosition(0) - startX, s.groundTruthBodyPosition(1) - startY, s.simTime(),
-                fallen ? "FELL" : "no fall", DemoFigures.metres(figures.smallestMargin()), DemoFigures.count(figures.probes()),
+        System.out.printf(Locale.ROOT, "summary: walked %.2f m in %.1f s, %s; crusts found by probes %d, loaded-foot"
+                        + " breakthroughs %d (target: none); off the course line at most %.2f m, off the heading at most"
+                        + " %.2f rad%n", s.groundTruthBodyPosition(0) - startX, s.simTime(), fallen ? "FELL" : "no fall",
+                onCourse.probeBroken(), onCourse.loadedBreakthroughs(), onCourse.maxTrackError(),
+                onCourse.maxHeadingError());
+        System.out.printf(Locale.ROOT, "details: %.3f m sideways; smallest stability margin %s; probes %s; fragile cells"
+                        + " found %s, avoided %s, broken %d%n", s.groundTruthBodyPosition(1) - startY,
+                DemoFigures.metres(figures.smallestMargin()), DemoFigures.count(figures.probes()),
                 DemoFigures.count(figures.fragileFound()), DemoFigures.count(figures.fragileAvoided()), s.brokenCellCount());
         System.out.println("course: " + onCourse.summary());
         if (sensedTrack != null) {

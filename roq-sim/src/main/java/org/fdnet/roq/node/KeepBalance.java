@@ -47,7 +47,7 @@ public class KeepBalance extends Relation {
     /** RoQ's weight, N. */
     private static final double WEIGHT = TOTAL_MASS * 9.81;
     /** How far the centre of mass moves against the feet when the body moves by 1 over them. */
-    private static final double FOLLOW = 1 - LEGS * LEG_REST / 2 / TOTAL_MASS;
+    static final double FOLLOW = 1 - LEGS * LEG_REST / 2 / TOTAL_MASS;
     /** The farthest the body shifts from its place over the feet, m. */
     private static final double MOST_SHIFT = 0.15;
     /** The fastest the body shifts over its feet, m/s. */
@@ -188,7 +188,7 @@ public class KeepBalance extends Relation {
     }
 
     /** The centre of mass's x in the body frame, estimated from the feet: body at its centre, each coxa at its hip, the rest of each leg halfway between hip and foot. */
-    private static double comX(double[] feet) {
+    static double comX(double[] feet) {
         double s = 0;
         for (int leg = 0; leg < LEGS; leg++) {
             double hip = HIP_POSITION[leg][0];
@@ -197,7 +197,7 @@ public class KeepBalance extends Relation {
         return s / TOTAL_MASS;
     }
 
-    private static double comY(double[] feet) {
+    static double comY(double[] feet) {
         double s = 0;
         for (int leg = 0; leg < LEGS; leg++) {
             double hip = HIP_POSITION[leg][1];

@@ -5,7 +5,8 @@
  * posture integration, inverse kinematics, fall detection, the tilt reflex). Relations act on what a real RoQ senses,
  * never on ground truth ({@code body_position}, {@code centre_of_mass}: for measurement and tests only);
  * {@link org.fdnet.roq.node.SensedFeet} turns joint angles, sole forces and attitude into feet and centre of
- * pressure for the closed loops.
+ * pressure for the closed loops; {@link org.fdnet.roq.node.GaitPhase} and {@link org.fdnet.roq.node.Feet} are the
+ * typed views of the gait phase and of the twelve feet numbers.
  *
  * <pre>
  *   simulator snapshot ──SimBridge──▶ RoqSensor Datas (attitude, joint angles, foot forces…)
@@ -22,6 +23,11 @@
  *   gait phase, joint angles, foot forces, attitude ──▶ KeepBalance ──balance shift (12)──▶ PostureIntegration
  *   imu gyro, attitude, joint angles, foot forces, gait phase ──▶ HoldCourse ──steer (rad per stance)──▶ CrawlGait
  *   attitude, gait feet ──▶ LevelBody ──level (12, z only: the body back to level on a slope)──▶ PostureIntegration
+ *
+ *   weight-transfer crawl (roq-transfer, every 10 ms):
+ *   foot forces, joint angles, attitude, sole targets, steer ──▶ TransferCrawl ──gait feet, gait phase (GaitPhase)──┐
+ *   gait phase, joint angles, foot forces, attitude ──▶ DistributeForces ──sole targets (4 N)──▶ TrackSoleForces   │
+ *   TrackSoleForces ──sole admittance (12, z only)──▶ PostureIntegration ◀─────────────────────────────────────────┘
  *
  *   tilt reflex (no period, fires on every snapshot):
  *   attitude, imu gyro, gait feet, gait phase ──▶ TiltReflex ──reflex press (12)──▶ PostureIntegration ──▶ IK

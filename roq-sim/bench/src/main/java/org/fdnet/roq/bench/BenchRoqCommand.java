@@ -143,6 +143,10 @@ public final class BenchRoqCommand implements Callable<Integer> {
     @Option(names = "--network", defaultValue = "networks/roq-rubble.fdn", description = "(a, heading) network (default networks/roq-rubble.fdn, the demo's)")
     Path network;
 
+    @Option(names = "--baseline-network", description = "(breakthroughs) the baseline: this network as it is, beside"
+            + " --network on the same seeds (default: --network with module Probing unloaded)")
+    Path baselineNetwork;
+
     @Option(names = "--reflex-network", defaultValue = "networks/roq-reflex-bench.fdn",
             description = "(b, push) network with a TiltReflex (default networks/roq-reflex-bench.fdn)")
     Path reflexNetwork;
@@ -235,7 +239,8 @@ public final class BenchRoqCommand implements Callable<Integer> {
                 if (part.equals("heading")) {
                     new HeadingDriftBench(definition, seeds, headingSeconds, noises).run();
                 } else {
-                    new BreakthroughSweep(definition, CourseLoader.resolve(course), noises, sweepSeconds,
+                    NetworkInfo beside = baselineNetwork == null ? null : load(baselineNetwork);
+                    new BreakthroughSweep(definition, beside, CourseLoader.resolve(course), noises, sweepSeconds,
                             unload.toArray(String[]::new)).run();
                 }
                 return 0;

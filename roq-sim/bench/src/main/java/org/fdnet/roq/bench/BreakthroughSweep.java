@@ -18,8 +18,9 @@ import org.fdnet.roq.testkit.RoqMeasures;
  * fragile cells broke under a loaded foot ({@link RoqMeasures#loadedBreakthroughs()}) against under a probe, how far
  * RoQ walked, how far it strayed and whether it fell. One run says little — on {@code crossing} the count moves by
  * 0–3 from one noise seed to the next — so it is the sum over the seeds that compares. Baseline, over the same seeds:
- * the network with module Probing unloaded (every crust stepped on then breaks under a loaded foot). At most two runs
- * at a time; a line per run as it ends.
+ * the network with module Probing unloaded (every crust stepped on then breaks under a loaded foot), or another
+ * network when one is given (the crawl a new gait replaces, beside it). At most two runs at a time; a line per run as
+ * it ends.
  */
 final class BreakthroughSweep {
     private final NetworkInfo network;
@@ -30,9 +31,18 @@ final class BreakthroughSweep {
     private final String[] unloaded;
     /** The baseline's sum, once {@link #run()} has run. */
     private Sum baseline;
+    /** The baseline's network, or null for this network with Probing unloaded. */
+    private final NetworkInfo baselineNetwork;
 
     BreakthroughSweep(NetworkInfo network, Course course, long[] noises, int seconds, String... unloaded) {
+        this(network, null, course, noises, seconds, unloaded);
+    }
+
+    /** A sweep whose baseline is {@code baselineNetwork} as it is (null: {@code network} with Probing unloaded). */
+    BreakthroughSweep(NetworkInfo network, NetworkInfo baselineNetwork, Course course, long[] noises, int seconds,
+                      String... unloaded) {
         this.network = network;
+        this.baselineNetwork = baselineNetwork;
         this.course = course;
         this.noises = noises.clone();
         this.seconds = seconds;
@@ -41,8 +51,10 @@ final class BreakthroughSweep {
 
     /** Sums of one variant's runs. */
     record Sum(int runs, int loaded, int probeBroken, int withNone, int fallen, double walked, double leastWalked,
-               double track, double heading, int swinging, int standing, int slid) {
-        static Sum of(List<MeasuredWalk> walks) {
+               double track, double heading, int swinging, int standing, int slid, double seconds, long slack) {
+        static Sum of(List<MeasuredWalk> walks, double seconds) {
+            long slack = walks.stream().mapToLong(MeasuredWalk::slackTicks).min().orElse(-1) < 0 ? -1
+                    : walks.stream().mapToLong(MeasuredWalk::slackTicks).sum();
             int swinging = 0;
             int standing = 0;
             int slid = 0;
@@ -69,25 +81,26 @@ final class BreakthroughSweep {
                 heading = Math.max(heading, r.headingError());
             }
             return new Sum(walks.size(), loaded, probe, none, fallen, walked / walks.size(), least, track, heading,
-                    swinging, standing, slid);
+                    swinging, standing, slid, seconds, slack);
         }
 
         String line(String label) {
             return String.format(Locale.ROOT, "%s: %d loaded-foot breakthroughs over %d runs (%d runs with none; under a"
                             + " swinging foot %d, under a standing foot %d, of which slid %.0f cm or more since set down"
                             + " %d), %d cells broken by probes, %d fallen; walked %.3f m on average (least %.3f); off the"
-                            + " line at most %.3f m, off the heading at most %.3f rad", label, loaded, runs, withNone,
-                    swinging, standing, BreakthroughCauses.SLID * 100, slid, probeBroken, fallen, walked, leastWalked,
-                    track, heading);
+                            + " line at most %.3f m, off the heading at most %.3f rad; mean speed %.1f cm/s%s", label,
+                    loaded, runs, withNone, swinging, standing, BreakthroughCauses.SLID * 100, slid, probeBroken, fallen,
+                    walked, leastWalked, track, heading, walked / seconds * 100,
+                    slack < 0 ? "" : String.format(Locale.ROOT, "; %d stance ticks below the least sole force", slack));
         }
     }
 
     /** Runs both variants on every seed, prints each run and the two sums; returns the network's. */
     Sum run() throws Exception {
         System.out.printf(Locale.ROOT, "fdnet bench roq --part breakthroughs: %s%s on %s, %d simulated s per run, %d"
-                        + " noise seeds, stepped, two at a time; baseline: module Probing unloaded%n", network.name(),
+                        + " noise seeds, stepped, two at a time; baseline: %s%n", network.name(),
                 unloaded.length == 0 ? "" : " with " + String.join(", ", unloaded) + " unloaded", course.name(), seconds,
-                noises.length);
+                noises.length, baselineNetwork == null ? "module Probing unloaded" : baselineNetwork.name());
         String[] withoutProbing = Stream.concat(Arrays.stream(unloaded), Stream.of("Probing")).distinct()
                 .toArray(String[]::new);
         ExecutorService pool = Executors.newFixedThreadPool(2);
@@ -99,15 +112,19 @@ final class BreakthroughSweep {
                         unloaded)));
             }
             for (long noise : noises) {
-                unprobed.add(pool.submit(() -> MeasuredWalk.of("noise " + noise + ", Probing unloaded", network, course,
-                        seconds, noise, withoutProbing)));
+                unprobed.add(pool.submit(() -> baselineNetwork == null
+                        ? MeasuredWalk.of("noise " + noise + ", Probing unloaded", network, course, seconds, noise,
+                                withoutProbing)
+                        : MeasuredWalk.of("noise " + noise + ", " + baselineNetwork.name(), baselineNetwork, course,
+                                seconds, noise)));
             }
             List<MeasuredWalk> with = collect(probed);
             List<MeasuredWalk> without = collect(unprobed);
-            Sum sum = Sum.of(with);
+            Sum sum = Sum.of(with, seconds);
             System.out.println(sum.line("with the network as it is"));
-            baseline = Sum.of(without);
-            System.out.println(baseline.line("baseline, module Probing unloaded"));
+            baseline = Sum.of(without, seconds);
+            System.out.println(baseline.line(baselineNetwork == null ? "baseline, module Probing unloaded"
+                    : "baseline, " + baselineNetwork.name()));
             return sum;
         } finally {
             pool.shutdownNow();

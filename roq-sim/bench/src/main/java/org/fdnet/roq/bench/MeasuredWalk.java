@@ -5,27 +5,43 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.testkit.RoqMeasures;
 import org.fdnet.roq.testkit.SimulatedRoq;
+import org.fdnet.runtime.Value;
 
 /**
  * One robot run of the sweeps, as a user's robot test runs it: {@code network} on {@code course} with seeded sensor
  * noise, some modules unloaded, for a number of simulated seconds on a {@link SimulatedRoq}; what the kit measured.
  *
- * @param label    what the sweep calls the run
- * @param measures the kit's ground-truth measures at the end
+ * @param label       what the sweep calls the run
+ * @param measures    the kit's ground-truth measures at the end
+ * @param slackTicks  the network's count of stance ticks below the minimum sole force (its Data {@value #SLACK}),
+ *                    or −1 when it has none
  */
-record MeasuredWalk(String label, RoqMeasures measures) {
+record MeasuredWalk(String label, RoqMeasures measures, long slackTicks) {
+    /** The Data a force-distributing network counts its slack stance ticks in. */
+    static final String SLACK = "Forces/slack ticks";
+
     /** Runs {@code network} on {@code course} for {@code seconds} of simulated time, noise seed {@code noise}. */
     static MeasuredWalk of(String label, NetworkInfo network, Course course, int seconds, long noise,
                            String... unloaded) {
         try (SimulatedRoq roq = SimulatedRoq.builder().network(network).course(course).noise(noise).unload(unloaded)
                 .start()) {
             roq.runFor(Duration.ofSeconds(seconds));
-            return new MeasuredWalk(label, roq.measures());
+            return new MeasuredWalk(label, roq.measures(), slackTicks(roq));
+        }
+    }
+
+    private static long slackTicks(SimulatedRoq roq) {
+        try {
+            Value v = roq.network().value(SLACK);
+            return v == null ? 0 : v.asLong();
+        } catch (IllegalArgumentException noSuchData) {
+            return -1; // a network without a force distribution counts no slack ticks
         }
     }
 
     @Override
     public String toString() {
-        return label + ": " + measures;
+        return label + ": " + measures + (slackTicks >= 0 ? ", " + slackTicks + " stance ticks below the least sole force"
+                : "");
     }
 }

@@ -40,6 +40,12 @@ public final class OutboundLink implements AutoCloseable {
     private static final AtomicInteger THREADS = new AtomicInteger();
     /** The longest a writer waits for room while the peer acknowledges nothing. */
     public static final long MAX_WRITER_WAIT_MILLIS = 2_000;
+    /**
+     * A lone value goes from the writer's thread only this soon after the peer last answered: the ORB closes a
+     * connection that received nothing for its call timeout ({@link OrbSettings}), and a call on a closed one
+     * would open a new connection — a connect that may take the connect timeout — on the writer's thread.
+     */
+    static final long DIRECT_AFTER_REPLY_MILLIS = 1_000;
 
     /** Told when a link breaks and when it carries values again. */
     public interface StateListener {
@@ -88,6 +94,7 @@ public final class OutboundLink implements AutoCloseable {
     private Batch directPending;
     private long directDeadlineNanos;
     private long directCalls;
+    private long lastReplyNanos;
 
     /**
      * @param stream the identity values written locally get here (see {@link ValueOrigin}): unique per host
@@ -296,7 +303,8 @@ public final class OutboundLink implements AutoCloseable {
     /** Under the lock: the link is idle, so the value just offered may go from the writer's thread. */
     private boolean mayDeliverDirectly() {
         return direct != null && directPending == null && inFlight == 0 && !probing && !broken
-                && sendSeq == tailSeq - 1 && !LinkFaults.armed();
+                && sendSeq == tailSeq - 1 && !LinkFaults.armed()
+                && System.nanoTime() - lastReplyNanos < DIRECT_AFTER_REPLY_MILLIS * 1_000_000L;
     }
 
     /** Outside the lock, on the writer's thread: puts the call on the wire; its reply settles it. */
@@ -488,6 +496,7 @@ public final class OutboundLink implements AutoCloseable {
                 inFlight--;
                 if (failure == null) {
                     acknowledge(expected);
+                    lastReplyNanos = System.nanoTime();
                     restored = broken;
                     broken = false;
                     probing = false;

@@ -60,6 +60,23 @@ class DirectDeliveryTest {
     }
 
     @Test
+    void shouldLeaveAValueToTheSenderThreadsWhenThePeerHasBeenSilentForASecond() throws Exception {
+        SlowSink sink = new SlowSink();
+        link = linkTo(sink);
+        link.offer(0L);
+        awaitTrue(() -> link.acknowledged() == 1);
+
+        Thread.sleep(OutboundLink.DIRECT_AFTER_REPLY_MILLIS + 200); // its connection may be closed by now
+        link.offer(1L);
+        awaitTrue(() -> link.acknowledged() == 2);
+        link.offer(2L); // answered just now: direct again
+        awaitTrue(() -> link.acknowledged() == 3);
+
+        assertThat(sink.applied()).containsExactly(0L, 1L, 2L);
+        assertThat(link.directCalls()).isEqualTo(1);
+    }
+
+    @Test
     void shouldFailADirectCallWhoseReplyIsLateAndApplyItsValueOnce() throws Exception {
         SlowSink sink = new SlowSink();
         link = linkTo(sink);

@@ -1,8 +1,10 @@
 package org.fdnet.corba;
 
+import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
 import org.fdnet.corba.idl.ConnectionSpec;
+import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.ModuleInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeRef;
@@ -77,7 +79,8 @@ public final class Caller {
 
     /**
      * Why the caller may not make the change from {@code before} to {@code after}: it needs {@link Right#RESHAPE} on
-     * every module the change adds, removes or alters.
+     * every module the change adds, removes or alters, and on the modules of both ends of every connection it makes or
+     * removes (a module's connection may read or write another module's node), as a host asks of a share change.
      *
      * @param before the network as it is
      * @param after  the network as the caller wants it
@@ -87,17 +90,39 @@ public final class Caller {
         Set<String> names = new TreeSet<>();
         before.modules().forEach(m -> names.add(m.name()));
         after.modules().forEach(m -> names.add(m.name()));
+        Set<String> touched = new TreeSet<>();
         for (String module : names) {
             ModuleInfo was = before.module(module);
             ModuleInfo will = after.module(module);
             if (was == null || !was.equals(will)) {
-                String refusal = refusal(Right.RESHAPE, module);
-                if (refusal != null) {
-                    return refusal;
-                }
+                touched.add(module);
+                addEndsOfChangedConnections(was, will, touched);
+            }
+        }
+        for (String module : touched) {
+            String refusal = refusal(Right.RESHAPE, module);
+            if (refusal != null) {
+                return refusal;
             }
         }
         return null;
+    }
+
+    private static void addEndsOfChangedConnections(ModuleInfo was, ModuleInfo will, Set<String> modules) {
+        List<ConnectionInfo> before = was == null ? List.of() : was.connections();
+        List<ConnectionInfo> after = will == null ? List.of() : will.connections();
+        addEndsOfConnectionsNotIn(before, after, modules);
+        addEndsOfConnectionsNotIn(after, before, modules);
+    }
+
+    private static void addEndsOfConnectionsNotIn(List<ConnectionInfo> these, List<ConnectionInfo> others,
+                                                  Set<String> modules) {
+        for (ConnectionInfo c : these) {
+            if (others.stream().noneMatch(c::sameDeclaration)) {
+                modules.add(c.data().module());
+                modules.add(c.relation().module());
+            }
+        }
     }
 
     /**

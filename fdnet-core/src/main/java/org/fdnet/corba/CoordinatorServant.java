@@ -24,9 +24,9 @@ import org.omg.CORBA.SystemException;
  * The CORBA servant of {@code interface NetworkCoordinator}: what every host's Servants ask about the whole network
  * and how they reshape it, served by the process that runs the network over a {@link DistributedControl}.
  * {@link #publish} activates it on that process's ORB and tells every host of the deployment about it. The calling
- * host's certificate needs {@code read} to read a Data, {@code reshape} on every module an edit changes, {@code load},
- * {@code unload} or {@code reshape} (hold, resume) on the module it changes, and {@code reshape} of every module to
- * send a servant message ({@link Caller}).
+ * host's certificate needs {@code read} to read a Data, {@code reshape} on every module an edit changes and on the
+ * modules at both ends of every connection it makes or removes, {@code load}, {@code unload} or {@code reshape} (hold,
+ * resume) on the module it changes, and {@code reshape} of every module to send a servant message ({@link Caller}).
  */
 public final class CoordinatorServant extends NetworkCoordinatorPOA {
     private final DistributedControl control;

@@ -17,10 +17,12 @@ import org.fdnet.corba.idl.NetworkDescription;
 import org.fdnet.corba.idl.Outcome;
 import org.fdnet.corba.idl.UnknownServant;
 import org.fdnet.event.MemoryEventSink;
+import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.netinfo.NodeInfo;
 import org.fdnet.netinfo.NodeKind;
 import org.fdnet.netinfo.NodeRef;
+import org.fdnet.netinfo.Parameter;
 import org.fdnet.runtime.WholeNetwork;
 import org.fdnet.tls.TestKeys;
 import org.fdnet.tls.TlsIdentity;
@@ -37,8 +39,8 @@ import org.omg.CORBA.NO_PERMISSION;
  * The network coordinator (what {@code fdnet run} serves to every host's Servants) under a permissions file, over TLS:
  * the test JVM coordinates as host "base" with the operator's certificate, host "crawler" is a child process, and each
  * caller reaches the coordinator on an ORB of its own with its own certificate. A walker limited to module Walk is
- * refused reading a Data of Gait, editing, unloading, holding and resuming Gait, loading Spare and sending a servant
- * message, with a reason naming the certificate, the node or module and the right; nothing refused reaches a host; the
+ * refused reading a Data of Gait, editing Gait (or Walk so that a Relation writes Gait's Data), unloading, holding and
+ * resuming Gait, loading Spare and sending a servant message, with a reason naming the certificate, the node or module and the right; nothing refused reaches a host; the
  * same operations on Walk (or by the operator) are done.
  *
  * <pre>
@@ -113,8 +115,9 @@ class CoordinatorPermissionsTest {
 
     @Test
     void shouldRefuseReadingADataOutsideTheCertificatesReadGrantAndReadOneInside() throws Exception {
-        crawlerAs("operator").write(IdlMapping.id(SPEED), ValueCodec.encode(0.75));
-        crawlerAs("operator").write(IdlMapping.id(PHASE), ValueCodec.encode(0.25));
+        Host asOperator = crawlerAs("operator");
+        asOperator.write(IdlMapping.id(SPEED), ValueCodec.encode(0.75));
+        asOperator.write(IdlMapping.id(PHASE), ValueCodec.encode(0.25));
         NetworkCoordinator asWalker = coordinatorAs("walker");
         assertThatThrownBy(() -> asWalker.read(IdlMapping.id(PHASE))).isInstanceOf(NO_PERMISSION.class)
                 .hasMessageContaining("certificate 'walker' may not read Gait/Phase");
@@ -131,11 +134,19 @@ class CoordinatorPermissionsTest {
         assertThat(gait.text).contains("certificate 'walker' may not reshape module Gait")
                 .endsWith("nothing changed on any host");
         assertThat(asWalker.describeNetwork().version).as("the network's version").isEqualTo(before.version);
-        assertThat(crawlerAs("operator").nodes()).as("crawler runs").doesNotContain("Gait/Extra");
+        assertThat(crawlerNodes()).as("crawler runs").doesNotContain("Gait/Extra");
 
         Outcome walk = asWalker.applyEdit("add Walk/Extra", before.version, edited(before, "Walk"));
         assertThat(walk.executed).as(walk.text).isTrue();
-        assertThat(crawlerAs("operator").nodes()).contains("Walk/Extra").doesNotContain("Gait/Extra");
+        assertThat(crawlerNodes()).contains("Walk/Extra").doesNotContain("Gait/Extra");
+
+        // a Relation of Walk that would write Gait's Data reshapes Gait too
+        NetworkDescription now = asWalker.describeNetwork();
+        Outcome intoGait = asWalker.applyEdit("add Walk/Pusher", now.version, withPusher(now));
+        assertRefused(intoGait, "certificate 'walker' may not reshape module Gait");
+        assertThat(crawlerNodes()).doesNotContain("Walk/Pusher");
+        assertDone(coordinatorAs("operator").applyEdit("add Walk/Pusher", now.version, withPusher(now)));
+        assertThat(crawlerNodes()).contains("Walk/Pusher");
     }
 
     @Test
@@ -145,27 +156,27 @@ class CoordinatorPermissionsTest {
         assertRefused(asWalker.changeModule(ModuleOp.MO_HOLD, "Gait"), "certificate 'walker' may not reshape module Gait");
         assertRefused(asWalker.changeModule(ModuleOp.MO_RESUME, "Gait"), "certificate 'walker' may not reshape module Gait");
         assertRefused(asWalker.changeModule(ModuleOp.MO_LOAD, "Spare"), "certificate 'walker' may not load module Spare");
-        assertThat(crawlerAs("operator").nodes()).as("crawler runs").contains(PHASE.toString())
+        assertThat(crawlerNodes()).as("crawler runs").contains(PHASE.toString())
                 .doesNotContain("Spare/Idle");
 
         assertDone(asWalker.changeModule(ModuleOp.MO_HOLD, "Walk"));
         assertDone(asWalker.changeModule(ModuleOp.MO_RESUME, "Walk"));
         assertDone(asWalker.changeModule(ModuleOp.MO_UNLOAD, "Walk"));
-        assertThat(crawlerAs("operator").nodes()).doesNotContain(SPEED.toString()).contains(PHASE.toString());
+        assertThat(crawlerNodes()).doesNotContain(SPEED.toString()).contains(PHASE.toString());
         assertDone(asWalker.changeModule(ModuleOp.MO_LOAD, "Walk"));
-        assertThat(crawlerAs("operator").nodes()).contains(SPEED.toString());
+        assertThat(crawlerNodes()).contains(SPEED.toString());
         NetworkCoordinator asOperator = coordinatorAs("operator");
         assertDone(asOperator.changeModule(ModuleOp.MO_LOAD, "Spare"));
-        assertThat(crawlerAs("operator").nodes()).contains("Spare/Idle");
+        assertThat(crawlerNodes()).contains("Spare/Idle");
         assertDone(asOperator.changeModule(ModuleOp.MO_UNLOAD, "Spare"));
     }
 
     @Test
     void shouldRefuseAServantMessageToACertificateThatMayNotReshapeEveryModule() throws Exception {
-        String[] nodes = crawlerAs("operator").nodes();
+        List<String> nodes = crawlerNodes();
         assertThatThrownBy(() -> coordinatorAs("walker").sendMessage("base", "Nowhere", "nodes", ValueCodec.encode(0.0)))
                 .isInstanceOf(NO_PERMISSION.class).hasMessageContaining("certificate 'walker' may not reshape module *");
-        assertThat(crawlerAs("operator").nodes()).as("crawler runs").containsExactlyInAnyOrder(nodes);
+        assertThat(crawlerNodes()).as("crawler runs").containsExactlyInAnyOrderElementsOf(nodes);
         assertThatThrownBy(() -> coordinatorAs("operator").sendMessage("base", "Nowhere", "nodes",
                 ValueCodec.encode(0.0))).as("the operator's message reaches the hosts, which have no such servant")
                 .isInstanceOf(UnknownServant.class);
@@ -189,6 +200,18 @@ class CoordinatorPermissionsTest {
                 now.placedOn()));
     }
 
+    /** The network as described, with a Relation of Walk on crawler that reads Walk/Speed and writes Gait/Phase. */
+    private static NetworkDescription withPusher(NetworkDescription description) {
+        WholeNetwork.Snapshot now = NetworkDescriptions.decode(description);
+        NetworkInfo after = now.definition().copy();
+        NodeRef pusher = after.addNode("Walk", new NodeInfo(NodeKind.RELATION, "Pusher", "crawler", "", "Expression",
+                List.of(Parameter.named("expression", "in0 * 2"))));
+        after.addConnection("Walk", ConnectionInfo.reader(SPEED, pusher));
+        after.addConnection("Walk", ConnectionInfo.writer(pusher, PHASE));
+        return NetworkDescriptions.encode(description.version, new WholeNetwork.Snapshot(after, now.loaded(),
+                now.placedOn()));
+    }
+
     private static NetworkInfo network() {
         NetworkInfo n = new NetworkInfo("coordinator-permissions");
         n.addModule("Walk", true);
@@ -204,6 +227,15 @@ class CoordinatorPermissionsTest {
     /** The coordinator as reached by the member {@code name}, on an ORB of its own (a connection of its own). */
     private NetworkCoordinator coordinatorAs(String name) {
         return NetworkCoordinatorHelper.narrow(orbAs(name).orb().string_to_object(coordinator));
+    }
+
+    /**
+     * The nodes host crawler runs, asked on the coordinator's own connection ({@code nodes} needs no right): this JVM
+     * presents one certificate at a time on new connections, so a test's callers are made one after the other and
+     * never interleaved with another member's.
+     */
+    private List<String> crawlerNodes() {
+        return List.of(deployment.host("crawler").nodes());
     }
 
     /** Host crawler as reached by the member {@code name}, on an ORB of its own. */

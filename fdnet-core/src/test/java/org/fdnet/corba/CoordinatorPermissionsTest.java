@@ -62,6 +62,7 @@ class CoordinatorPermissionsTest {
             walker    unload   Walk
             walker    reshape  Walk
             """;
+    private static final String NO_LOOPBACK = "jacorb.iiop.enable_loopback";
     private static final NodeRef SPEED = new NodeRef("Walk", "Speed");
     private static final NodeRef PHASE = new NodeRef("Gait", "Phase");
 
@@ -85,8 +86,16 @@ class CoordinatorPermissionsTest {
                 "--tls", store("crawler")), "fdnet host crawler ready", 60_000));
         useCertificate("operator");
         OrbSettings settings = OrbSettings.defaults().withNaming(naming).withCallTimeoutMillis(10_000);
-        base = HostProcess.start("base", settings, LocalNetworks.forHost("base", List.of()), new ClassPolicy(List.of()),
-                LinkSettings.defaults());
+        // JacORB would hand the test's calls to host base over in memory (it is in this JVM), where no TLS session names
+        // the caller and the coordinator would take every call for its own process's: base listens without that
+        // loopback, so every call travels a TLS connection as it does between processes
+        System.setProperty(NO_LOOPBACK, "off");
+        try {
+            base = HostProcess.start("base", settings, LocalNetworks.forHost("base", List.of()),
+                    new ClassPolicy(List.of()), LinkSettings.defaults());
+        } finally {
+            System.clearProperty(NO_LOOPBACK);
+        }
         processes.add(base);
         deployment = NetworkDeployment.start(DeploymentPlan.of(network(), "base", Set.of()),
                 HostDirectory.connect(base.orb()), Map.of("base", base.reference()), DeploymentListener.quiet(),
@@ -224,9 +233,16 @@ class CoordinatorPermissionsTest {
         return n;
     }
 
-    /** The coordinator as reached by the member {@code name}, on an ORB of its own (a connection of its own). */
+    /**
+     * The coordinator as reached by the member {@code name}, on an ORB of its own: its connection is made with that
+     * member's certificate, then this JVM's own certificate is the operator's again, so the coordinator can only learn
+     * the caller from the connection's TLS session.
+     */
     private NetworkCoordinator coordinatorAs(String name) {
-        return NetworkCoordinatorHelper.narrow(orbAs(name).orb().string_to_object(coordinator));
+        NetworkCoordinator ref = NetworkCoordinatorHelper.narrow(orbAs(name).orb().string_to_object(coordinator));
+        assertThat(ref._non_existent()).isFalse();
+        useCertificate("operator");
+        return ref;
     }
 
     /**

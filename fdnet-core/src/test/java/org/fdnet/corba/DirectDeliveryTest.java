@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.Map;
+import java.util.TreeMap;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
@@ -118,12 +119,17 @@ class DirectDeliveryTest {
                 });
     }
 
-    /** Applies each sequence number once, in order; can hold one reply back after applying its batch. */
+    /**
+     * Like {@link InboundLink}: applies each sequence number once, in order, holding back a batch that overtook the
+     * one ahead of it (a direct call and a sender thread's call can reach the wire in either order); can hold one
+     * reply back after applying its batch.
+     */
     private static final class SlowSink extends ValueSinkPOA {
         private final List<Long> applied = new ArrayList<>();
         private long expected = -1;
         private long holdMillis;
         private final Map<Long, Integer> received = new HashMap<>();
+        private final TreeMap<Long, ValueBatch> heldBack = new TreeMap<>();
 
         synchronized void holdNextReplyMillis(long millis) {
             holdMillis = millis;
@@ -138,11 +144,16 @@ class DirectDeliveryTest {
                     expected = batch.firstSeq;
                 }
                 for (int i = 0; i < batch.values.length; i++) {
-                    long seq = batch.firstSeq + i;
-                    received.merge(seq, 1, Integer::sum);
-                    if (seq == expected) {
-                        applied.add((Long) ValueCodec.decode(batch.values[i]));
-                        expected++;
+                    received.merge(batch.firstSeq + i, 1, Integer::sum);
+                }
+                heldBack.put(batch.firstSeq, batch);
+                while (!heldBack.isEmpty() && heldBack.firstKey() <= expected) {
+                    ValueBatch ready = heldBack.pollFirstEntry().getValue();
+                    for (int i = 0; i < ready.values.length; i++) {
+                        if (ready.firstSeq + i == expected) {
+                            applied.add((Long) ValueCodec.decode(ready.values[i]));
+                            expected++;
+                        }
                     }
                 }
                 hold = holdMillis;

@@ -115,8 +115,9 @@ class ApartRoqDemoTest {
             hole = LoggedRows.longestGapMicros(target, run, cutMicros, healMicros);
         }
         System.out.printf(Locale.ROOT, "ApartRoqDemoTest: %s; logger black-holed %.1f s (%s); longest gap between"
-                        + " two snapshots fed %.1f ms, until t=%s s (bound %d ms); %s; %,d events acknowledged, %,d rows;"
-                        + " %,d values committed during the black hole stored, longest hole %.1f ms%n", summary.group(0),
+                        + " two snapshots fed %.1f ms, until t=%s s (bound %d ms); %s; %,d events acknowledged,"
+                        + " %,d rows; %,d values committed during the black hole stored, longest hole %.1f ms%n",
+                summary.group(0),
                 (healMicros - cutMicros) / 1e6, silent, longestGapMillis, fed.group(3), BOUND_MILLIS,
                 line(demo, LOOP).group(), acked, rows, carried, hole / 1e3);
         assertThat(rows).as("every acknowledged event in the database exactly once").isEqualTo(acked);

@@ -36,12 +36,20 @@ public enum Right {
         this.scope = scope;
     }
 
-    /** What a grant of this right names. */
+    /**
+     * What a grant of this right names.
+     *
+     * @return a Data or module pattern, a module pattern, or nothing
+     */
     public Scope scope() {
         return scope;
     }
 
-    /** The word a permissions file uses: {@code read}, {@code write}, … */
+    /**
+     * The word a permissions file uses for this right.
+     *
+     * @return {@code read}, {@code write}, {@code load}, …
+     */
     public String word() {
         return name().toLowerCase(Locale.ROOT);
     }

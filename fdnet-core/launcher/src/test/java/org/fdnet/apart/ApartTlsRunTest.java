@@ -6,10 +6,7 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.sql.Connection;
-import java.sql.ResultSet;
 import java.sql.SQLException;
-import java.sql.Statement;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
@@ -49,22 +46,21 @@ class ApartTlsRunTest {
     @TempDir
     Path folder;
 
-    private final List<FdnetChildProcess> processes = new ArrayList<>();
+    private ApartProcesses apart;
     private ApartRig rig;
 
     @AfterEach
     void cleanUp() {
-        for (int i = processes.size() - 1; i >= 0; i--) {
-            processes.get(i).close();
-        }
-        if (rig != null) {
-            rig.close();
+        if (apart != null) {
+            apart.close();
         }
     }
 
     @Test
     void shouldRunTwoRobotsOverTlsOnFiveAddressesAndRefuseEveryPortToStrangers() throws Exception {
-        rig = ApartRig.create("fdnapartls", List.of("naming", "flyer", "crawler", "logger", "viewer"));
+        apart = ApartProcesses.create("fdnapartls", List.of("naming", "flyer", "crawler", "logger", "viewer"),
+                folder.resolve("home"));
+        rig = apart.rig();
         KeyMaker keys = new KeyMaker(folder.resolve("keys"));
         keys.make(List.of("naming", "flyer", "crawler", "operator", "logger", "viewer"));
         String naming = "corbaloc::" + address("naming") + ":" + NAMING_PORT + "/NameService";
@@ -131,11 +127,11 @@ class ApartTlsRunTest {
         try (EmbeddedDatabase database = EmbeddedDatabase.start(folder.resolve("pg"), 0)) {
             DatabaseTarget target = database.target();
             for (Matcher m : committed) {
-                assertThat(rowsOf(target, m.group(3))).as("rows of host %s", m.group(1))
+                assertThat(LoggedRows.rowsOf(target, m.group(3))).as("rows of host %s", m.group(1))
                         .isEqualTo(Long.parseLong(m.group(2).replace(",", ""))).isPositive();
             }
-            assertThat(number(target, "SELECT count(*) FROM fdnet_run")).as("the three hosts' streams and nothing from"
-                    + " the clients that were refused").isEqualTo(3);
+            assertThat(LoggedRows.number(target, "SELECT count(*) FROM fdnet_run"))
+                    .as("the three hosts' streams and nothing from the clients that were refused").isEqualTo(3);
             assertThat(valuesOf(target, "flyer", "Map")).isGreaterThan(5);
             assertThat(valuesOf(target, "crawler", "Heading")).isGreaterThan(5);
             assertThat(valuesOf(target, "crawler", "Certainty")).isGreaterThan(5);
@@ -144,7 +140,8 @@ class ApartTlsRunTest {
 
     @Test
     void shouldRefuseToStartAnyServerOnItsOwnAddressWithoutTls() throws Exception {
-        rig = ApartRig.create("fdnapartls", List.of("robot"));
+        apart = ApartProcesses.create("fdnapartls", List.of("robot"), folder.resolve("home"));
+        rig = apart.rig();
         String here = address("robot");
         String naming = "corbaloc::" + here + ":" + NAMING_PORT + "/NameService";
         List<List<String>> commands = List.of(
@@ -155,12 +152,11 @@ class ApartTlsRunTest {
         List<Supplier<FdnetChildProcess>> starts = new ArrayList<>();
         for (List<String> command : commands) {
             starts.add(() -> FdnetChildProcess.start(String.join(" ", command), rig.command("robot", List.of()),
-                    jvmOptions(), command, "without TLS", READY_MILLIS));
+                    apart.jvmOptions(), command, "without TLS", READY_MILLIS));
         }
         List<FdnetChildProcess> refused = inParallel(starts);
         for (int i = 0; i < commands.size(); i++) {
-            FdnetChildProcess p = refused.get(i);
-            processes.add(p);
+            FdnetChildProcess p = apart.add(refused.get(i));
             String label = String.join(" ", commands.get(i));
             assertThat(p.awaitExit(60_000)).as(label + "\n" + String.join("\n", p.output())).isNotZero();
             assertThat(String.join("\n", p.output())).as(label).contains("would listen on " + here)
@@ -175,21 +171,11 @@ class ApartTlsRunTest {
     }
 
     private FdnetChildProcess start(String label, String host, List<String> args, String ready) {
-        FdnetChildProcess p = FdnetChildProcess.start(label, rig.command(host, List.of()), jvmOptions(), args, ready,
-                READY_MILLIS);
-        synchronized (processes) {
-            processes.add(p);
-        }
-        return p;
-    }
-
-    /** A home of the test's own: the children's logs and journals stay out of the user's ~/.fdnet. */
-    private List<String> jvmOptions() {
-        return List.of("-Duser.home=" + folder.resolve("home"));
+        return apart.start(label, host, args, ready, READY_MILLIS);
     }
 
     private String address(String host) {
-        return rig.address(host).getHostAddress();
+        return apart.address(host);
     }
 
     /** Every TCP socket listening in {@code host}'s namespace on an address other hosts can reach, as ADDRESS:PORT. */
@@ -251,24 +237,9 @@ class ApartTlsRunTest {
                 prefix.length() + 1).strip())).findFirst().orElse(0);
     }
 
-    private static long rowsOf(DatabaseTarget db, String stream) throws SQLException {
-        String where = " WHERE sourceid IN (SELECT n.sourceid FROM fdnet_node n JOIN fdnet_run r USING (run_id)"
-                + " WHERE r.run_uuid = '" + stream + "')";
-        return number(db, "SELECT (SELECT count(*) FROM datavalue_log" + where + ") + (SELECT count(*) FROM procvalue_log"
-                + where + ") + (SELECT count(*) FROM netcommand_log" + where + ") + (SELECT count(*) FROM fdnet_node"
-                + where + " AND node IS NOT NULL)");
-    }
-
     private static long valuesOf(DatabaseTarget db, String host, String data) throws SQLException {
-        return number(db, "SELECT count(*) FROM datavalue_log WHERE sourceid IN (SELECT n.sourceid FROM fdnet_node n"
-                + " JOIN fdnet_run r USING (run_id) WHERE r.host = '" + host + "' AND n.module = 'main' AND n.node = '"
+        return LoggedRows.number(db, "SELECT count(*) FROM datavalue_log WHERE sourceid IN (SELECT n.sourceid"
+                + " FROM fdnet_node n JOIN fdnet_run r USING (run_id) WHERE r.host = '" + host + "' AND n.module = 'main' AND n.node = '"
                 + data + "')");
-    }
-
-    private static long number(DatabaseTarget db, String sql) throws SQLException {
-        try (Connection c = db.open(); Statement s = c.createStatement(); ResultSet rs = s.executeQuery(sql)) {
-            rs.next();
-            return rs.getLong(1);
-        }
     }
 }

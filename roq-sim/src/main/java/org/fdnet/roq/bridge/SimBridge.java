@@ -81,6 +81,10 @@ public final class SimBridge implements AutoCloseable {
     private Thread thread;
     private volatile long cycles;
     private volatile long commandsSent;
+    /** Real time: the longest wall-clock time from one snapshot's feed to the next's, ns (0 before two feeds). */
+    private volatile long longestFeedGapNanos;
+    /** The loop's tick of the snapshot that ended the longest gap (-1 before two feeds). */
+    private volatile long longestFeedGapTick = -1;
 
     private SimBridge(RuntimeNetwork network, RoqSimulator simulator, long startMicros, int cycleTicks,
                       boolean realTime) {
@@ -137,6 +141,7 @@ public final class SimBridge implements AutoCloseable {
     private void poll() {
         RealTimeThreads.promoteCurrentThread();
         long lastTick = -1;
+        long lastFeed = 0;
         while (running) {
             long tick = simulator.read(snapshot);
             if (tick == lastTick) {
@@ -144,6 +149,12 @@ public final class SimBridge implements AutoCloseable {
                 continue;
             }
             lastTick = tick;
+            long now = System.nanoTime();
+            if (lastFeed != 0 && now - lastFeed > longestFeedGapNanos) {
+                longestFeedGapNanos = now - lastFeed;
+                longestFeedGapTick = tick;
+            }
+            lastFeed = now;
             try {
                 feed();
                 cycles++;
@@ -270,6 +281,21 @@ public final class SimBridge implements AutoCloseable {
     /** Cycles run so far. */
     public long cycles() {
         return cycles;
+    }
+
+    /**
+     * Real time: the longest wall-clock time between feeding two snapshots to the network, ns. The loop publishes a
+     * snapshot each millisecond, so this is about 1 ms unless the bridge's thread was held: by a commit blocked in the
+     * network (for instance by an event sink that waits for the logger) or by the machine's scheduler. 0 in stepped
+     * mode and before two feeds.
+     */
+    public long longestFeedGapNanos() {
+        return longestFeedGapNanos;
+    }
+
+    /** The loop's tick (1 ms each from its start) of the snapshot fed after the longest gap; -1 before two feeds. */
+    public long longestFeedGapTick() {
+        return longestFeedGapTick;
     }
 
     /** Commands sent so far: one per JointTargets value that differed from the one before. */

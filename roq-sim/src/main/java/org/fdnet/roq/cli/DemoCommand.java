@@ -190,6 +190,9 @@ public final class DemoCommand implements Callable<Integer> {
         double startY;
         boolean fallen = false;
         DemoFigures figures = DemoFigures.none();
+        long snapshotsFed = 0;
+        long longestFeedGapNanos = 0;
+        long longestFeedGapTick = -1;
         CourseMeter onCourse = null;
         String sensedTrack = null;
         RoqDemoWindow window = null;
@@ -244,6 +247,9 @@ public final class DemoCommand implements Callable<Integer> {
             sim.statistics(stats);
             figures = meter.figures(net, s, startX, stats, fallen);
             sensedTrack = sensedTrack(net);
+            snapshotsFed = bridge.cycles();
+            longestFeedGapNanos = bridge.longestFeedGapNanos();
+            longestFeedGapTick = bridge.longestFeedGapTick();
             if (screenshot != null) {
                 writeScreenshot(window, s, figures, sim);
                 System.out.println("screenshot: " + screenshot.toAbsolutePath());
@@ -271,6 +277,8 @@ public final class DemoCommand implements Callable<Integer> {
         }
         System.out.printf(Locale.ROOT, "loop: %,d ticks, %,d overruns, wake-up p99 %.1f µs (max %.1f µs)%n", stats.ticks(),
                 stats.overruns(), stats.latencyPercentileNanos(99) / 1e3, stats.maxLatencyNanos() / 1e3);
+        System.out.printf(Locale.ROOT, "network: %,d snapshots fed, longest gap between two %.1f ms (until t=%.1f s)%n",
+                snapshotsFed, longestFeedGapNanos / 1e6, longestFeedGapTick / 1e3);
         System.out.printf(Locale.ROOT, "events: %,d logged by the network%n", meter.events());
         if (client != null) {
             client.close();

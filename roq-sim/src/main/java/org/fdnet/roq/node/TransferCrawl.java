@@ -552,22 +552,13 @@ public class TransferCrawl extends Relation {
         if (state == State.SETTLE) {
             return;
         }
-        double rx = 0;
-        double ry = 0;
-        int n = 0;
-        for (int k = 0; k < LEGS; k++) {
-            if (standing(k)) {
-                double[] e = sensedGround(k);
-                rx += e[0] - gx[k];
-                ry += e[1] - gy[k];
-                n++;
-            }
-        }
+        double[] drift = standingDrift();
+        int n = (int) drift[2];
         if (n < 3) {
             return;
         }
-        rx /= n;
-        ry /= n;
+        double rx = drift[0] / n;
+        double ry = drift[1] / n;
         for (int k = 0; k < LEGS; k++) {
             if (!standing(k) || k == proving || slipped[k]) {
                 continue;
@@ -582,8 +573,8 @@ public class TransferCrawl extends Relation {
         }
     }
 
-    /** Records how far the sensed foot {@code l} stands off its place now, the reference its slip is told from. */
-    private void recordSetDown(int l) {
+    /** The standing feet's summed drift from where they were set, along x and y, and how many stand. */
+    private double[] standingDrift() {
         double rx = 0;
         double ry = 0;
         int n = 0;
@@ -595,8 +586,15 @@ public class TransferCrawl extends Relation {
                 n++;
             }
         }
+        return new double[] {rx, ry, n};
+    }
+
+    /** Records how far the sensed foot {@code l} stands off its place now, the reference its slip is told from. */
+    private void recordSetDown(int l) {
+        double[] drift = standingDrift();
+        int n = (int) drift[2];
         double[] e = sensedGround(l);
-        slip0[l] = n == 0 ? 0 : Math.hypot(e[0] - gx[l] - rx / n, e[1] - gy[l] - ry / n);
+        slip0[l] = n == 0 ? 0 : Math.hypot(e[0] - gx[l] - drift[0] / n, e[1] - gy[l] - drift[1] / n);
         slipped[l] = false;
         slidFor[l] = 0;
     }

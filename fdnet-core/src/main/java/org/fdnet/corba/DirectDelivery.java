@@ -2,7 +2,7 @@ package org.fdnet.corba;
 
 import java.nio.ByteBuffer;
 import java.util.Map;
-import java.util.WeakHashMap;
+import java.util.HashMap;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
 import org.fdnet.corba.idl.UnknownLink;
@@ -60,7 +60,6 @@ final class DirectDelivery implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(DirectDelivery.class);
     private static final String REPLY_HANDLER_ID = "IDL:omg.org/Messaging/ReplyHandler:1.0";
     private static final String REPLY_TIMEOUT = "jacorb.connection.client.pending_reply_timeout";
-    private static final TypeCode[] USER_EXCEPTIONS = {UnknownLinkHelper.type()};
     private static final int MAX_REMARSHALS = 3;
 
     /** Where a call's outcome goes; called on the ORB's reader thread. */
@@ -70,7 +69,8 @@ final class DirectDelivery implements AutoCloseable {
         void failed(String reason);
     }
 
-    private static final Map<ORB, ReplyServant> SERVANTS = new WeakHashMap<>();
+    /** Per ORB, its reply servant; an ORB's entry goes when {@link OrbRuntime} closes it ({@link #orbClosed}). */
+    private static final Map<ORB, ReplyServant> SERVANTS = new HashMap<>();
     private static final AtomicLong INSTANCES = new AtomicLong();
 
     private final ReplyServant servant;
@@ -125,6 +125,13 @@ final class DirectDelivery implements AutoCloseable {
                 SERVANTS.put(orb, servant);
             }
             return servant;
+        }
+    }
+
+    /** Forgets {@code orb}'s reply servant (the ORB is shut down: no reply can come to it any more). */
+    static void orbClosed(ORB orb) {
+        synchronized (SERVANTS) {
+            SERVANTS.remove(orb);
         }
     }
 
@@ -248,7 +255,7 @@ final class DirectDelivery implements AutoCloseable {
         private static String failureIn(InputStream in, long link) {
             try {
                 ExceptionHolder holder = (ExceptionHolder) ((org.omg.CORBA_2_3.portable.InputStream) in).read_value();
-                holder.raise_exception_with_list(USER_EXCEPTIONS);
+                holder.raise_exception_with_list(new TypeCode[] {UnknownLinkHelper.type()});
                 return "the peer answered with an exception that could not be read";
             } catch (UserException | SystemException e) {
                 return failure(e, link);

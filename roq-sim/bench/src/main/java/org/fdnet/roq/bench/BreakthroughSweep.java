@@ -12,6 +12,7 @@ import org.fdnet.netinfo.NetworkInfo;
 import org.fdnet.roq.bridge.BreakthroughCauses;
 import org.fdnet.roq.sim.Course;
 import org.fdnet.roq.testkit.RoqMeasures;
+import org.fdnet.roq.testkit.SimulatedRoq;
 
 /**
  * {@code fdnet bench roq --part breakthroughs}: a course walked on many sensor-noise seeds, stepped, and how many
@@ -51,7 +52,8 @@ final class BreakthroughSweep {
 
     /** Sums of one variant's runs. */
     record Sum(int runs, int loaded, int probeBroken, int withNone, int fallen, double walked, double leastWalked,
-               double track, double heading, int swinging, int standing, int slid, double seconds, long slack) {
+               double track, double heading, int swinging, int standing, int slid, double seconds, long slack,
+               long strained) {
         static Sum of(List<MeasuredWalk> walks, double seconds) {
             long slack = walks.stream().mapToLong(MeasuredWalk::slackTicks).min().orElse(-1) < 0 ? -1
                     : walks.stream().mapToLong(MeasuredWalk::slackTicks).sum();
@@ -81,17 +83,20 @@ final class BreakthroughSweep {
                 heading = Math.max(heading, r.headingError());
             }
             return new Sum(walks.size(), loaded, probe, none, fallen, walked / walks.size(), least, track, heading,
-                    swinging, standing, slid, seconds, slack);
+                    swinging, standing, slid, seconds, slack,
+                    walks.stream().mapToLong(MeasuredWalk::strainedTicks).sum());
         }
 
         String line(String label) {
             return String.format(Locale.ROOT, "%s: %d loaded-foot breakthroughs over %d runs (%d runs with none; under a"
                             + " swinging foot %d, under a standing foot %d, of which slid %.0f cm or more since set down"
                             + " %d), %d cells broken by probes, %d fallen; walked %.3f m on average (least %.3f); off the"
-                            + " line at most %.3f m, off the heading at most %.3f rad; mean speed %.1f cm/s%s", label,
+                            + " line at most %.3f m, off the heading at most %.3f rad; mean speed %.1f cm/s%s; a joint at"
+                            + " its torque limit %.0f %% of the time", label,
                     loaded, runs, withNone, swinging, standing, BreakthroughCauses.SLID * 100, slid, probeBroken, fallen,
                     walked, leastWalked, track, heading, walked / seconds * 100,
-                    slack < 0 ? "" : String.format(Locale.ROOT, "; %d stance ticks below the least sole force", slack));
+                    slack < 0 ? "" : String.format(Locale.ROOT, "; %d stance ticks below the least sole force", slack),
+                    runs == 0 ? 0.0 : 100.0 * strained * SimulatedRoq.STEP.toMillis() / (runs * seconds * 1000));
         }
     }
 

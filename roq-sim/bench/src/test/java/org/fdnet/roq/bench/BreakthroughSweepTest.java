@@ -3,8 +3,10 @@ package org.fdnet.roq.bench;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.file.Path;
+import java.util.List;
 import org.fdnet.netinfo.xml.NetworkRepository;
 import org.fdnet.roq.sim.CourseLoader;
+import org.fdnet.roq.testkit.RoqMeasures;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -35,6 +37,17 @@ class BreakthroughSweepTest {
         assertThat(unprobed.standing()).as("without Probing, breaks under a standing foot").isPositive();
         assertThat(unprobed.swinging() + unprobed.standing()).isLessThanOrEqualTo(unprobed.loaded());
         assertThat(probed.swinging() + probed.standing()).isLessThanOrEqualTo(probed.loaded());
+    }
+
+    /** Two runs of 10 s are 2,000 steps of 10 ms; 500 of them with a joint at its torque limit are a quarter. */
+    @Test
+    void shouldSumTheStepsWithAJointAtItsTorqueLimitAndSayWhatPartOfTheTimeTheyAre() {
+        RoqMeasures m = new RoqMeasures(10, 0.4, 0.01, 0.01, 0.05, false, 1, 0, 0, 0, 0, Double.NaN);
+        BreakthroughSweep.Sum sum = BreakthroughSweep.Sum.of(List.of(new MeasuredWalk("a", m, 3, 200),
+                new MeasuredWalk("b", m, 4, 300)), 10);
+        assertThat(sum.strained()).isEqualTo(500);
+        assertThat(sum.slack()).isEqualTo(7);
+        assertThat(sum.line("sum")).contains("a joint at its torque limit 25 % of the time");
     }
 
     @Test

@@ -64,7 +64,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     private final Map<Long, InboundLink> inbound = new ConcurrentHashMap<>();
     private final Map<Long, Forwarding> outbound = new ConcurrentHashMap<>();
     private final AtomicLong retiredReceived = new AtomicLong();
-    private final Map<NodeRef, Map<String, Long>> seenByTarget = new ConcurrentHashMap<>();
+    private final Map<NodeRef, Map<String, AtomicLong>> seenByTarget = new ConcurrentHashMap<>();
     private final ChangeOwners changeOwners;
 
     private record Forwarding(OutboundLink link, NodeRef source, AutoCloseable observation) {
@@ -381,7 +381,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         Caller.require(Right.RESHAPE, target.moduleName);
         requireNode(target);
         NodeRef ref = IdlMapping.ref(target);
-        Map<String, Long> seen = seenByTarget.computeIfAbsent(ref, r -> new ConcurrentHashMap<>());
+        Map<String, AtomicLong> seen = seenByTarget.computeIfAbsent(ref, r -> new ConcurrentHashMap<>());
         retire(inbound.put(link, new InboundLink(link, ref, fromHost, network, seen)));
         notifier.publish(ChangeKind.LINK_OPENED, "link " + link + " from " + fromHost + " into " + IdlMapping.ref(target));
     }

@@ -451,12 +451,17 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     }
 
     /**
-     * A peer's {@code deliver} is read by {@link CheckedValueReader}, not by the generated helper, so that hostile
-     * bytes are refused before anything they claim is allocated; every other operation is dispatched as generated.
+     * A peer's {@code deliver} and {@code deliverAhead} are read by {@link CheckedValueReader}, not by the generated
+     * helper, so that hostile bytes are refused before anything they claim is allocated; every other operation is
+     * dispatched as generated.
      */
     @Override
     public org.omg.CORBA.portable.OutputStream _invoke(String method, org.omg.CORBA.portable.InputStream input,
             org.omg.CORBA.portable.ResponseHandler handler) {
+        if ("deliverAhead".equals(method)) {
+            deliverAhead(CheckedValueReader.batch(input));
+            return null;
+        }
         if (!"deliver".equals(method)) {
             return super._invoke(method, input, handler);
         }
@@ -481,6 +486,19 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         }
         in.requireWriter(Caller.name());
         return in.deliver(batch);
+    }
+
+    /**
+     * A value sent ahead has no reply to carry a refusal: it is dropped, and the sender learns why from the
+     * {@code deliver} that confirms it (an unknown link, a caller that may not write).
+     */
+    @Override
+    public void deliverAhead(ValueBatch batch) {
+        try {
+            deliver(batch);
+        } catch (UnknownLink | org.omg.CORBA.NO_PERMISSION e) {
+            LOG.debug("a value sent ahead on link {} was dropped: {}", batch.link, e.toString());
+        }
     }
 
     @Override

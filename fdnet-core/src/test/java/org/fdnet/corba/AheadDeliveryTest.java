@@ -14,18 +14,17 @@ import java.util.stream.LongStream;
 import org.fdnet.corba.idl.ValueBatch;
 import org.fdnet.corba.idl.ValueSink;
 import org.fdnet.corba.idl.ValueSinkHelper;
-import org.fdnet.corba.idl.ValueSinkPOA;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 /**
- * An idle link's lone values sent from the writer's thread, against a sink in another ORB (a remote peer as far as
- * JacORB is concerned): acknowledged like any call, and a call whose reply is late is failed at the ORB's reply
- * timeout, its values sent again and applied once.
+ * An idle link's lone values sent ahead from the writer's thread (one-way), against a sink in another ORB (a remote
+ * peer as far as JacORB is concerned): applied at once, acknowledged by the confirmation a sender thread sends
+ * shortly after, sent again when one was lost, and a confirmation that goes unanswered breaks the link like any call.
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
-class DirectDeliveryTest {
+class AheadDeliveryTest {
     private static final int REPLY_TIMEOUT_MILLIS = 400;
 
     private final OrbRuntime sender = OrbRuntime.start(OrbSettings.defaults().withCallTimeoutMillis(REPLY_TIMEOUT_MILLIS));
@@ -43,51 +42,72 @@ class DirectDeliveryTest {
     }
 
     @Test
-    void shouldSendLoneValuesOnAnIdleLinkFromTheWritersThread() throws Exception {
-        SlowSink sink = new SlowSink();
+    void shouldSendLoneValuesAheadAndFreeThemWhenAConfirmationCoversThem() throws Exception {
+        RecordingSink sink = new RecordingSink();
         link = linkTo(sink);
 
         link.offer(0L); // the first call probes the peer through a sender thread
         awaitTrue(() -> link.acknowledged() == 1);
         for (long v = 1; v <= 20; v++) {
             link.offer(v);
-            long acknowledged = v + 1;
-            awaitTrue(() -> link.acknowledged() == acknowledged);
+            long value = v;
+            awaitTrue(() -> sink.applied().contains(value)); // applied before any reply came back
         }
+        awaitTrue(() -> link.acknowledged() == 21);
 
         assertThat(sink.applied()).containsExactlyElementsOf(LongStream.rangeClosed(0, 20).boxed().toList());
-        assertThat(link.directCalls()).isEqualTo(20);
+        assertThat(link.aheadSends()).isEqualTo(20);
+        assertThat(sink.aheadCalls()).isEqualTo(20);
+        assertThat(sink.twoWayCalls()).as("the probe, then confirmations only").isBetween(2, 21);
+        assertThat(link.pending()).isZero();
         assertThat(states).isEmpty();
     }
 
     @Test
     void shouldLeaveAValueToTheSenderThreadsWhenThePeerHasBeenSilentForASecond() throws Exception {
-        SlowSink sink = new SlowSink();
+        RecordingSink sink = new RecordingSink();
         link = linkTo(sink);
         link.offer(0L);
         awaitTrue(() -> link.acknowledged() == 1);
 
-        Thread.sleep(OutboundLink.DIRECT_AFTER_REPLY_MILLIS + 200); // its connection may be closed by now
+        Thread.sleep(OutboundLink.AHEAD_AFTER_REPLY_MILLIS + 200); // its connection may be closed by now
         link.offer(1L);
         awaitTrue(() -> link.acknowledged() == 2);
-        link.offer(2L); // answered just now: direct again
+        link.offer(2L); // answered just now: ahead again
         awaitTrue(() -> link.acknowledged() == 3);
 
         assertThat(sink.applied()).containsExactly(0L, 1L, 2L);
-        assertThat(link.directCalls()).isEqualTo(1);
+        assertThat(link.aheadSends()).isEqualTo(1);
     }
 
     @Test
-    void shouldFailADirectCallWhoseReplyIsLateAndApplyItsValueOnce() throws Exception {
-        SlowSink sink = new SlowSink();
+    void shouldSendAgainAValueLostAheadAndApplyEachValueOnceInOrder() throws Exception {
+        RecordingSink sink = new RecordingSink();
         link = linkTo(sink);
         link.offer(0L);
         awaitTrue(() -> link.acknowledged() == 1);
 
-        sink.holdNextReplyMillis(3 * REPLY_TIMEOUT_MILLIS); // applied at once, answered long after the timeout
+        sink.loseNextAhead();
+        link.offer(1L); // lost on the way
+        link.offer(2L); // arrives, and waits for 1
+        awaitTrue(() -> link.acknowledged() == 3);
+
+        assertThat(sink.applied()).containsExactly(0L, 1L, 2L);
+        assertThat(sink.timesReceived(1)).isEqualTo(1); // only with the confirmation
+        assertThat(sink.timesReceived(2)).isEqualTo(2); // ahead, then again with the confirmation
+        assertThat(states).isEmpty();
+    }
+
+    @Test
+    void shouldBreakTheLinkWhenAConfirmationGoesUnansweredAndApplyItsValueOnce() throws Exception {
+        RecordingSink sink = new RecordingSink();
+        link = linkTo(sink);
+        link.offer(0L);
+        awaitTrue(() -> link.acknowledged() == 1);
+
+        sink.holdNextReplyMillis(3 * REPLY_TIMEOUT_MILLIS); // the confirmation is answered long after the timeout
         link.offer(1L);
-        awaitTrue(() -> states.contains("broken: no reply within " + REPLY_TIMEOUT_MILLIS + " ms"));
-        awaitTrue(() -> link.acknowledged() == 2 && states.contains("restored"));
+        awaitTrue(() -> states.size() == 2 && link.acknowledged() == 2);
         for (long v = 2; v <= 10; v++) {
             link.offer(v);
         }
@@ -97,12 +117,12 @@ class DirectDeliveryTest {
         link.offer(11L);
         awaitTrue(() -> link.acknowledged() == 12);
         assertThat(sink.applied()).containsExactlyElementsOf(LongStream.rangeClosed(0, 11).boxed().toList());
-        assertThat(sink.timesReceived(1)).isEqualTo(2); // once answered late, once sent again
         assertThat(link.broken()).isFalse();
-        assertThat(states).containsExactly("broken: no reply within " + REPLY_TIMEOUT_MILLIS + " ms", "restored");
+        assertThat(states.get(0)).startsWith("broken: TIMEOUT");
+        assertThat(states.get(1)).isEqualTo("restored");
     }
 
-    private OutboundLink linkTo(SlowSink servant) {
+    private OutboundLink linkTo(RecordingSink servant) {
         String ior = receiver.orb().object_to_string(receiver.activate(servant));
         ValueSink sink = ValueSinkHelper.narrow(sender.orb().string_to_object(ior));
         return new OutboundLink(1, "test#1#1", "test link", sink, new LinkSettings(4, 256, 1 << 10, 50),
@@ -121,13 +141,16 @@ class DirectDeliveryTest {
 
     /**
      * Like {@link InboundLink}: applies each sequence number once, in order, holding back a batch that overtook the
-     * one ahead of it (a direct call and a sender thread's call can reach the wire in either order); can hold one
+     * one ahead of it; counts one-way and two-way calls, can lose the next value sent ahead and hold one two-way
      * reply back after applying its batch.
      */
-    private static final class SlowSink extends ValueSinkPOA {
+    private static final class RecordingSink extends TestValueSink {
         private final List<Long> applied = new ArrayList<>();
         private long expected = -1;
         private long holdMillis;
+        private boolean loseAhead;
+        private int aheadCalls;
+        private int twoWayCalls;
         private final Map<Long, Integer> received = new HashMap<>();
         private final TreeMap<Long, ValueBatch> heldBack = new TreeMap<>();
 
@@ -135,30 +158,31 @@ class DirectDeliveryTest {
             holdMillis = millis;
         }
 
+        synchronized void loseNextAhead() {
+            loseAhead = true;
+        }
+
+        @Override
+        public void deliverAhead(ValueBatch batch) {
+            synchronized (this) {
+                if (loseAhead) {
+                    loseAhead = false;
+                    return;
+                }
+                aheadCalls++;
+                apply(batch);
+            }
+        }
+
         @Override
         public long deliver(ValueBatch batch) {
             long hold;
             long next;
             synchronized (this) {
-                if (expected < 0) {
-                    expected = batch.firstSeq;
-                }
-                for (int i = 0; i < batch.values.length; i++) {
-                    received.merge(batch.firstSeq + i, 1, Integer::sum);
-                }
-                heldBack.put(batch.firstSeq, batch);
-                while (!heldBack.isEmpty() && heldBack.firstKey() <= expected) {
-                    ValueBatch ready = heldBack.pollFirstEntry().getValue();
-                    for (int i = 0; i < ready.values.length; i++) {
-                        if (ready.firstSeq + i == expected) {
-                            applied.add((Long) ValueCodec.decode(ready.values[i]));
-                            expected++;
-                        }
-                    }
-                }
+                twoWayCalls++;
+                next = apply(batch);
                 hold = holdMillis;
                 holdMillis = 0;
-                next = expected;
             }
             if (hold > 0) {
                 try {
@@ -170,12 +194,40 @@ class DirectDeliveryTest {
             return next;
         }
 
+        private long apply(ValueBatch batch) {
+            if (expected < 0) {
+                expected = batch.firstSeq;
+            }
+            for (int i = 0; i < batch.values.length; i++) {
+                received.merge(batch.firstSeq + i, 1, Integer::sum);
+            }
+            heldBack.put(batch.firstSeq, batch);
+            while (!heldBack.isEmpty() && heldBack.firstKey() <= expected) {
+                ValueBatch ready = heldBack.pollFirstEntry().getValue();
+                for (int i = 0; i < ready.values.length; i++) {
+                    if (ready.firstSeq + i == expected) {
+                        applied.add((Long) ValueCodec.decode(ready.values[i]));
+                        expected++;
+                    }
+                }
+            }
+            return expected;
+        }
+
         synchronized List<Long> applied() {
             return new ArrayList<>(applied);
         }
 
         synchronized int timesReceived(long seq) {
             return received.getOrDefault(seq, 0);
+        }
+
+        synchronized int aheadCalls() {
+            return aheadCalls;
+        }
+
+        synchronized int twoWayCalls() {
+            return twoWayCalls;
         }
     }
 

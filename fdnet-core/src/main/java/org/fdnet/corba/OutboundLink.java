@@ -34,8 +34,10 @@ import org.slf4j.LoggerFactory;
  * sends that value <em>ahead</em> itself, as a one-way {@code deliverAhead}: a lone value pays neither for waking a
  * sender thread nor for a reply on the way back. A value sent ahead stays in the ring until the reply of a
  * {@code deliver} covers it: when nothing else goes, a sender thread confirms what went ahead
- * {@value #AHEAD_CONFIRM_MILLIS} ms after the first of it, sending it again as one two-way call (the peer skips what it
- * has applied, and applies what was lost). A confirmation that fails breaks the link like any call.
+ * {@value #AHEAD_CONFIRM_MILLIS} ms after the first of it (or once {@value #AHEAD_CONFIRM_VALUES} values went ahead),
+ * sending it again as one two-way call (the peer skips what it has applied, and applies what was lost). A
+ * confirmation that fails breaks the link like any call. Values closer together than
+ * {@link #AHEAD_SPACING_NANOS} are a burst and go through the sender threads in batches.
  *
  * <pre>
  *   offer(v), link idle ──▶ deliverAhead(v) (one-way, writer's thread)     …  v stays in the ring
@@ -58,11 +60,19 @@ public final class OutboundLink implements AutoCloseable {
     static final long AHEAD_AFTER_REPLY_MILLIS = 1_000;
     /** How long after the first value sent ahead a sender thread confirms what went ahead (see the class comment). */
     static final long AHEAD_CONFIRM_MILLIS = 20;
+    /** How many values sent ahead a sender thread confirms at once, even before {@link #AHEAD_CONFIRM_MILLIS}. */
+    static final int AHEAD_CONFIRM_VALUES = 32;
     /**
      * The most values sent ahead and not yet covered by a reply; past it values go through the sender threads. It
-     * bounds what one confirmation sends again, and the bytes a silent peer can leave in the connection's buffers.
+     * bounds what one confirmation sends again, the one-way requests the peer's ORB may have queued from one link,
+     * and the bytes a silent peer can leave in the connection's buffers.
      */
-    static final int AHEAD_MAX = 512;
+    static final int AHEAD_MAX = 2 * AHEAD_CONFIRM_VALUES;
+    /**
+     * A value goes ahead only this long after the last one that did: values closer together are a burst, which the
+     * sender threads carry in batches (one call for many values) instead of one one-way call each.
+     */
+    static final long AHEAD_SPACING_NANOS = 10_000;
 
     /** Told when a link breaks and when it carries values again. */
     public interface StateListener {
@@ -109,6 +119,7 @@ public final class OutboundLink implements AutoCloseable {
     private boolean aheadPossible;
     /** When the first value sent ahead and not yet covered by a reply went; 0: a reply covers everything sent. */
     private long aheadSinceNanos;
+    private long lastAheadNanos;
     private long aheadSends;
     private long lastReplyNanos;
 
@@ -196,8 +207,8 @@ public final class OutboundLink implements AutoCloseable {
             if (mayGoAhead()) {
                 boolean firstAhead = aheadSinceNanos == 0;
                 ahead = takeAhead();
-                if (firstAhead && waitingCallers > 0) {
-                    lock.notify(); // a sender thread starts the confirmation's clock
+                if ((firstAhead || sendSeq - headSeq == AHEAD_CONFIRM_VALUES) && waitingCallers > 0) {
+                    lock.notify(); // a sender thread starts the confirmation's clock, or confirms now
                 }
             } else if (waitingCallers > 0 && !watching) {
                 if (writerWaiting) {
@@ -287,9 +298,12 @@ public final class OutboundLink implements AutoCloseable {
 
     /** Under the lock: the link is idle, so the value just offered may go ahead from the writer's thread. */
     private boolean mayGoAhead() {
-        return aheadPossible && inFlight == 0 && !probing && !broken && sendSeq == tailSeq - 1
-                && sendSeq - headSeq < AHEAD_MAX && !LinkFaults.armed()
-                && System.nanoTime() - lastReplyNanos < AHEAD_AFTER_REPLY_MILLIS * 1_000_000L;
+        if (!aheadPossible || inFlight != 0 || probing || broken || sendSeq != tailSeq - 1
+                || sendSeq - headSeq >= AHEAD_MAX || LinkFaults.armed()) {
+            return false;
+        }
+        long now = System.nanoTime();
+        return now - lastReplyNanos < AHEAD_AFTER_REPLY_MILLIS * 1_000_000L && now - lastAheadNanos >= AHEAD_SPACING_NANOS;
     }
 
     /** Under the lock: the one value waiting, sent ahead; it stays unacknowledged until a reply covers it. */
@@ -297,8 +311,9 @@ public final class OutboundLink implements AutoCloseable {
         Batch batch = takeBatch(sendSeq, tailSeq, false);
         sendSeq = tailSeq;
         aheadSends++;
+        lastAheadNanos = System.nanoTime();
         if (aheadSinceNanos == 0) {
-            aheadSinceNanos = System.nanoTime();
+            aheadSinceNanos = lastAheadNanos;
         }
         return batch;
     }
@@ -328,11 +343,16 @@ public final class OutboundLink implements AutoCloseable {
 
     /**
      * Under the lock: values went ahead and no reply has moved {@link #headSeq} for {@value #AHEAD_CONFIRM_MILLIS} ms
-     * since — nothing else went to cover them, or one of them was lost and the peer holds back what came after it.
+     * since — nothing else went to cover them, or one of them was lost and the peer holds back what came after it —
+     * or {@value #AHEAD_CONFIRM_VALUES} of them wait for a reply.
      */
     private boolean confirmationDue() {
-        return aheadSinceNanos != 0 && !broken && !probing && headSeq < sendSeq && inFlight < settings.window()
-                && System.nanoTime() - aheadSinceNanos >= AHEAD_CONFIRM_MILLIS * 1_000_000L;
+        if (aheadSinceNanos == 0 || broken || probing || headSeq == sendSeq || inFlight >= settings.window()) {
+            return false;
+        }
+        // with nothing in flight, every value not yet acknowledged went ahead
+        return inFlight == 0 && sendSeq - headSeq >= AHEAD_CONFIRM_VALUES
+                || System.nanoTime() - aheadSinceNanos >= AHEAD_CONFIRM_MILLIS * 1_000_000L;
     }
 
     /** Under the lock: how long a parked caller may wait before a confirmation is due; 0 when none is waited for. */
@@ -366,6 +386,7 @@ public final class OutboundLink implements AutoCloseable {
                     return null;
                 }
                 if (confirmationDue()) {
+                    aheadSinceNanos = System.nanoTime(); // the next confirmation, if this one's reply does not cover all
                     return takeBatch(headSeq, sendSeq, true); // sends again what went ahead: the reply covers it
                 }
                 if (readyToSend()) {

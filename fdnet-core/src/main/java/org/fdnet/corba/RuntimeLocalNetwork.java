@@ -422,13 +422,14 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
 
         /** Whether {@code value}, stored in {@code ref}, is the injected value (each observer asks). */
         boolean isOf(NodeRef ref, Value value) {
+            if (stored != null) {
+                return stored == value; // each store is a value of its own: the same object is the same Data's
+            }
             if (data == null || !data.equals(ref)) {
                 return false;
             }
-            if (stored == null) {
-                stored = value;
-            }
-            return stored == value;
+            stored = value;
+            return true;
         }
     }
 

@@ -69,8 +69,8 @@ public final class OutboundLink implements AutoCloseable {
      */
     static final int AHEAD_MAX = 2 * AHEAD_CONFIRM_VALUES;
     /**
-     * A value goes ahead only this long after the last one that did: values closer together are a burst, which the
-     * sender threads carry in batches (one call for many values) instead of one one-way call each.
+     * A value goes ahead only this long after the send of the last one that did returned: values closer together are
+     * a burst, which the sender threads carry in batches (one call for many values) instead of one one-way call each.
      */
     static final long AHEAD_SPACING_NANOS = 10_000;
 
@@ -119,7 +119,8 @@ public final class OutboundLink implements AutoCloseable {
     private boolean aheadPossible;
     /** When the first value sent ahead and not yet covered by a reply went; 0: a reply covers everything sent. */
     private long aheadSinceNanos;
-    private long lastAheadNanos;
+    /** When the last value sent ahead was on the wire (its send returned): a burst is told from it. */
+    private volatile long lastAheadNanos;
     private long aheadSends;
     private long lastReplyNanos;
 
@@ -311,9 +312,8 @@ public final class OutboundLink implements AutoCloseable {
         Batch batch = takeBatch(sendSeq, tailSeq, false);
         sendSeq = tailSeq;
         aheadSends++;
-        lastAheadNanos = System.nanoTime();
         if (aheadSinceNanos == 0) {
-            aheadSinceNanos = lastAheadNanos;
+            aheadSinceNanos = System.nanoTime();
         }
         return batch;
     }
@@ -322,6 +322,8 @@ public final class OutboundLink implements AutoCloseable {
     private void sendAhead(Batch batch) {
         try {
             batch.target().deliverAhead(delivery(batch));
+            // from the end of the send: a writer whose next value comes while this one was being sent is a burst
+            lastAheadNanos = System.nanoTime();
         } catch (SystemException e) {
             settle(batch, -1, failureOf(e, id));
         }

@@ -64,7 +64,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     private final Map<Long, InboundLink> inbound = new ConcurrentHashMap<>();
     private final Map<Long, Forwarding> outbound = new ConcurrentHashMap<>();
     private final AtomicLong retiredReceived = new AtomicLong();
-    private final Map<NodeRef, Map<String, Long>> seenByTarget = new ConcurrentHashMap<>();
+    private final Map<NodeRef, Map<String, AtomicLong>> seenByTarget = new ConcurrentHashMap<>();
     private final ChangeOwners changeOwners;
 
     private record Forwarding(OutboundLink link, NodeRef source, AutoCloseable observation) {
@@ -381,7 +381,7 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         Caller.require(Right.RESHAPE, target.moduleName);
         requireNode(target);
         NodeRef ref = IdlMapping.ref(target);
-        Map<String, Long> seen = seenByTarget.computeIfAbsent(ref, r -> new ConcurrentHashMap<>());
+        Map<String, AtomicLong> seen = seenByTarget.computeIfAbsent(ref, r -> new ConcurrentHashMap<>());
         retire(inbound.put(link, new InboundLink(link, ref, fromHost, network, seen)));
         notifier.publish(ChangeKind.LINK_OPENED, "link " + link + " from " + fromHost + " into " + IdlMapping.ref(target));
     }
@@ -451,12 +451,17 @@ public final class HostServant extends HostPOA implements AutoCloseable {
     }
 
     /**
-     * A peer's {@code deliver} is read by {@link CheckedValueReader}, not by the generated helper, so that hostile
-     * bytes are refused before anything they claim is allocated; every other operation is dispatched as generated.
+     * A peer's {@code deliver} and {@code deliverAhead} are read by {@link CheckedValueReader}, not by the generated
+     * helper, so that hostile bytes are refused before anything they claim is allocated; every other operation is
+     * dispatched as generated.
      */
     @Override
     public org.omg.CORBA.portable.OutputStream _invoke(String method, org.omg.CORBA.portable.InputStream input,
             org.omg.CORBA.portable.ResponseHandler handler) {
+        if ("deliverAhead".equals(method)) {
+            deliverAhead(CheckedValueReader.batch(input));
+            return null;
+        }
         if (!"deliver".equals(method)) {
             return super._invoke(method, input, handler);
         }
@@ -481,6 +486,19 @@ public final class HostServant extends HostPOA implements AutoCloseable {
         }
         in.requireWriter(Caller.name());
         return in.deliver(batch);
+    }
+
+    /**
+     * A value sent ahead has no reply to carry a refusal: it is dropped, and the sender learns why from the
+     * {@code deliver} that confirms it (an unknown link, a caller that may not write).
+     */
+    @Override
+    public void deliverAhead(ValueBatch batch) {
+        try {
+            deliver(batch);
+        } catch (UnknownLink | org.omg.CORBA.NO_PERMISSION e) {
+            LOG.debug("a value sent ahead on link {} was dropped: {}", batch.link, e.toString());
+        }
     }
 
     @Override

@@ -2,6 +2,7 @@ package org.fdnet.corba;
 
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.concurrent.atomic.AtomicLong;
 import org.fdnet.corba.idl.ValueBatch;
 import org.fdnet.netinfo.NodeRef;
 import org.fdnet.tls.Right;
@@ -20,8 +21,11 @@ final class InboundLink {
     private final NodeRef target;
     private final String fromHost;
     private final LocalNetwork network;
-    /** Per origin stream, the highest number applied to {@link #target}: shared by every link into it. */
-    private final Map<String, Long> seen;
+    /**
+     * Per origin stream, the highest number applied to {@link #target}: shared by every link into it. A batch
+     * holds one stream's consecutive numbers, so it looks its stream's mark up once and moves it per value.
+     */
+    private final Map<String, AtomicLong> seen;
     private final TreeMap<Long, ValueBatch> heldBack = new TreeMap<>();
     private long expected = UNSET;
     private long applied;
@@ -29,7 +33,7 @@ final class InboundLink {
     /** The last caller found allowed to write {@link #target}: a link's batches come from one peer, checked once. */
     private volatile String allowedWriter;
 
-    InboundLink(long id, NodeRef target, String fromHost, LocalNetwork network, Map<String, Long> seen) {
+    InboundLink(long id, NodeRef target, String fromHost, LocalNetwork network, Map<String, AtomicLong> seen) {
         this.seen = seen;
         this.id = id;
         this.target = target;
@@ -83,15 +87,15 @@ final class InboundLink {
 
     private void apply(ValueBatch batch) {
         long end = batch.firstSeq + batch.values.length;
+        AtomicLong highest = seen.computeIfAbsent(batch.originStream, stream -> new AtomicLong(Long.MIN_VALUE));
         for (long seq = Math.max(expected, batch.firstSeq); seq < end; seq++) {
             int i = (int) (seq - batch.firstSeq);
             long originSeq = batch.originFirstSeq + i;
-            Long before = seen.get(batch.originStream);
-            if (before != null && originSeq <= before) {
+            if (originSeq <= highest.get()) {
                 duplicates++; // came again through a relay that died after passing it on
                 continue;
             }
-            seen.put(batch.originStream, originSeq);
+            highest.set(originSeq);
             Object value = ValueCodec.decode(batch.values[i]);
             network.inject(target, value, fromHost, new ValueOrigin(batch.originStream, originSeq));
             applied++;

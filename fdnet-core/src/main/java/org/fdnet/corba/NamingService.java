@@ -18,6 +18,7 @@ import org.slf4j.LoggerFactory;
  * hosts register. It answers {@code corbaloc::ADDRESS:PORT/NameService}.
  */
 public final class NamingService {
+    private static final String STATE_PREFIX = "fdnet-naming-";
     private static final Logger LOG = LoggerFactory.getLogger(NamingService.class);
 
     private NamingService() {
@@ -71,21 +72,47 @@ public final class NamingService {
         }
     }
 
-    /** A fresh folder for the bindings, removed when the JVM exits: hosts register again after a restart. */
+    /**
+     * A fresh folder for the bindings: hosts register again after a restart. JacORB's NameServer writes its bindings
+     * there from a shutdown hook of its own, which no other hook can wait for, so a folder is not removed when its
+     * JVM exits but by the next naming service that starts, once the process named in it is gone.
+     */
     private static Path stateDirectory() {
+        Path parent = Path.of(System.getProperty("java.io.tmpdir"));
+        removeLeftovers(parent);
         try {
-            Path dir = Files.createTempDirectory("fdnet-naming-");
-            Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-                try (var files = Files.list(dir)) {
-                    files.forEach(f -> f.toFile().delete());
-                } catch (IOException e) {
-                    LOG.debug("could not empty {}: {}", dir, e.toString());
-                }
-                dir.toFile().delete();
-            }, "fdnet-naming-cleanup"));
-            return dir;
+            return Files.createTempDirectory(parent, STATE_PREFIX + ProcessHandle.current().pid() + "-");
         } catch (IOException e) {
             throw new UncheckedIOException("cannot create a folder for the naming service's bindings", e);
+        }
+    }
+
+    /** Removes the folders of naming services whose process has ended. */
+    private static void removeLeftovers(Path parent) {
+        try (var dirs = Files.newDirectoryStream(parent, STATE_PREFIX + "*")) {
+            for (Path dir : dirs) {
+                if (ownerGone(dir.getFileName().toString())) {
+                    try (var files = Files.list(dir)) {
+                        files.forEach(f -> f.toFile().delete());
+                    }
+                    Files.deleteIfExists(dir);
+                }
+            }
+        } catch (IOException e) {
+            LOG.debug("could not remove old naming service folders in {}: {}", parent, e.toString());
+        }
+    }
+
+    private static boolean ownerGone(String folderName) {
+        String rest = folderName.substring(STATE_PREFIX.length());
+        int dash = rest.indexOf('-');
+        if (dash <= 0) {
+            return false; // not one of ours
+        }
+        try {
+            return ProcessHandle.of(Long.parseLong(rest.substring(0, dash))).map(p -> !p.isAlive()).orElse(true);
+        } catch (NumberFormatException e) {
+            return false;
         }
     }
 

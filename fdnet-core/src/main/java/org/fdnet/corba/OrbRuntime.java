@@ -104,7 +104,6 @@ public final class OrbRuntime implements AutoCloseable {
             LOG.warn("ORB shutdown failed: {}", e.toString(), e);
         } finally {
             orb.destroy();
-            DirectDelivery.orbClosed(orb);
         }
     }
 }

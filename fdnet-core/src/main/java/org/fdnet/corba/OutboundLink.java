@@ -7,6 +7,7 @@ import org.fdnet.corba.idl.Value;
 import org.fdnet.corba.idl.ValueBatch;
 import org.fdnet.corba.idl.ValueSink;
 import org.omg.CORBA.SystemException;
+import org.omg.CORBA.portable.ObjectImpl;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -29,11 +30,22 @@ import org.slf4j.LoggerFactory;
  *
  * <p>{@code offer} runs on the writer's thread under the engine's commit lock, so it never waits for a reply:
  * a blocking remote call there would stall the whole engine. When the link is idle — nothing in flight, the peer
- * has acknowledged before, the value the only one waiting — the writer puts that value's call on the wire itself
- * ({@link DirectDelivery}: a two-way call whose reply comes back on the ORB's reader thread), so a lone value does
- * not pay for waking a sender thread; a reply that does not come within the ORB's reply timeout fails the call
- * like a sender thread's ({@link DirectCallWatch} looks for overdue calls). Everything else goes through the {@code window} sender threads, and one caller of an
- * idle link may watch for the next value for {@link LinkSettings#spinMicros()} before it parks.
+ * answered within the last {@value #AHEAD_AFTER_REPLY_MILLIS} ms, the value the only one waiting — the writer
+ * sends that value <em>ahead</em> itself, as a one-way {@code deliverAhead}: a lone value pays neither for waking a
+ * sender thread nor for a reply on the way back. A value sent ahead stays in the ring until the reply of a
+ * {@code deliver} covers it: when nothing else goes, a sender thread confirms what went ahead
+ * {@value #AHEAD_CONFIRM_MILLIS} ms after the first of it (or once {@value #AHEAD_CONFIRM_VALUES} values went ahead),
+ * sending it again as one two-way call (the peer skips what it has applied, and applies what was lost). A
+ * confirmation that fails breaks the link like any call. Values closer together than
+ * {@link #AHEAD_SPACING_NANOS} are a burst and go through the sender threads in batches.
+ *
+ * <pre>
+ *   offer(v), link idle ──▶ deliverAhead(v) (one-way, writer's thread)     …  v stays in the ring
+ *   AHEAD_CONFIRM_MILLIS later, a sender thread ──▶ deliver([headSeq, sendSeq)) ──▶ reply: headSeq moves
+ * </pre>
+ *
+ * Everything else goes through the {@code window} sender threads, and one caller of an idle link may watch for the
+ * next value for {@link LinkSettings#spinMicros()} before it parks.
  */
 public final class OutboundLink implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(OutboundLink.class);
@@ -41,11 +53,26 @@ public final class OutboundLink implements AutoCloseable {
     /** The longest a writer waits for room while the peer acknowledges nothing. */
     public static final long MAX_WRITER_WAIT_MILLIS = 2_000;
     /**
-     * A lone value goes from the writer's thread only this soon after the peer last answered: the ORB closes a
-     * connection that received nothing for its call timeout ({@link OrbSettings}), and a call on a closed one
+     * A lone value goes ahead from the writer's thread only this soon after the peer last answered: the ORB closes
+     * a connection that received nothing for its call timeout ({@link OrbSettings}), and a call on a closed one
      * would open a new connection — a connect that may take the connect timeout — on the writer's thread.
      */
-    static final long DIRECT_AFTER_REPLY_MILLIS = 1_000;
+    static final long AHEAD_AFTER_REPLY_MILLIS = 1_000;
+    /** How long after the first value sent ahead a sender thread confirms what went ahead (see the class comment). */
+    static final long AHEAD_CONFIRM_MILLIS = 20;
+    /** How many values sent ahead a sender thread confirms at once, even before {@link #AHEAD_CONFIRM_MILLIS}. */
+    static final int AHEAD_CONFIRM_VALUES = 32;
+    /**
+     * The most values sent ahead and not yet covered by a reply; past it values go through the sender threads. It
+     * bounds what one confirmation sends again, the one-way requests the peer's ORB may have queued from one link,
+     * and the bytes a silent peer can leave in the connection's buffers.
+     */
+    static final int AHEAD_MAX = 2 * AHEAD_CONFIRM_VALUES;
+    /**
+     * A value goes ahead only this long after the send of the last one that did returned: values closer together are
+     * a burst, which the sender threads carry in batches (one call for many values) instead of one one-way call each.
+     */
+    static final long AHEAD_SPACING_NANOS = 10_000;
 
     /** Told when a link breaks and when it carries values again. */
     public interface StateListener {
@@ -88,12 +115,13 @@ public final class OutboundLink implements AutoCloseable {
     private ValueSink sink;
     /** The longest {@code deliver} call since {@link #takeLongestCallMillis} was last asked, ms. */
     private long longestCallMillis;
-    /** Sends an idle link's lone value from the writer's thread; {@code null} for a peer in this ORB. */
-    private DirectDelivery direct;
-    /** The call {@link #direct} has on the wire, settled by its reply or by its deadline. */
-    private Batch directPending;
-    private long directDeadlineNanos;
-    private long directCalls;
+    /** Whether the sink is a peer in another process: only then does a lone value go ahead (one in this ORB is called in place). */
+    private boolean aheadPossible;
+    /** When the first value sent ahead and not yet covered by a reply went; 0: a reply covers everything sent. */
+    private long aheadSinceNanos;
+    /** When the last value sent ahead was on the wire (its send returned): a burst is told from it. */
+    private volatile long lastAheadNanos;
+    private long aheadSends;
     private long lastReplyNanos;
 
     /**
@@ -112,10 +140,7 @@ public final class OutboundLink implements AutoCloseable {
         this.originStreams = new String[settings.capacity()];
         this.originSeqs = new long[settings.capacity()];
         this.mask = settings.capacity() - 1;
-        this.direct = DirectDelivery.open(id, sink, directReplies());
-        if (direct != null) {
-            DirectCallWatch.watch(this);
-        }
+        this.aheadPossible = inAnotherProcess(sink);
         this.callers = new Thread[settings.window()];
         for (int i = 0; i < callers.length; i++) {
             callers[i] = new Thread(this::sendLoop, "fdnet-link-" + id + "-" + THREADS.incrementAndGet());
@@ -145,8 +170,7 @@ public final class OutboundLink implements AutoCloseable {
     /** Queues one value that entered the links at {@code origin} ({@code null}: written on this host). */
     public void offer(Object value, ValueOrigin origin) {
         boolean reportStall = false;
-        Batch directBatch = null;
-        DirectDelivery via = null;
+        Batch ahead = null;
         synchronized (lock) {
             while (!closed && tailSeq - headSeq == ring.length) {
                 long now = System.nanoTime();
@@ -181,9 +205,12 @@ public final class OutboundLink implements AutoCloseable {
             originSeqs[slot] = origin == null ? tailSeq : origin.seq();
             tailSeq++;
             offered = tailSeq;
-            if (mayDeliverDirectly()) {
-                directBatch = takeBatch(true);
-                via = direct;
+            if (mayGoAhead()) {
+                boolean firstAhead = aheadSinceNanos == 0;
+                ahead = takeAhead();
+                if ((firstAhead || sendSeq - headSeq == AHEAD_CONFIRM_VALUES) && waitingCallers > 0) {
+                    lock.notify(); // a sender thread starts the confirmation's clock, or confirms now
+                }
             } else if (waitingCallers > 0 && !watching) {
                 if (writerWaiting) {
                     lock.notifyAll();
@@ -192,8 +219,8 @@ public final class OutboundLink implements AutoCloseable {
                 }
             }
         }
-        if (directBatch != null) {
-            sendDirectly(via, directBatch);
+        if (ahead != null) {
+            sendAhead(ahead);
         }
         if (reportStall) {
             LOG.warn("link {}: the peer acknowledged nothing for {} ms with {} values waiting; dropping the oldest"
@@ -203,24 +230,16 @@ public final class OutboundLink implements AutoCloseable {
 
     /** Points the link at a new sink (its peer restarted); everything unacknowledged is sent again. */
     public void retarget(ValueSink newSink) {
-        DirectDelivery old;
         synchronized (lock) {
             sink = Objects.requireNonNull(newSink, "newSink");
-            old = direct;
-            direct = DirectDelivery.open(id, newSink, directReplies());
-            if (direct != null) {
-                DirectCallWatch.watch(this);
-            }
-            directPending = null; // its reply, if any, belongs to the old generation
+            aheadPossible = inAnotherProcess(newSink);
             generation++;
             inFlight = 0; // calls to the old sink no longer count against the window
             sendSeq = headSeq;
+            aheadSinceNanos = 0;
             probing = true;
             broken = false;
             lock.notifyAll();
-        }
-        if (old != null) {
-            old.close();
         }
     }
 
@@ -256,10 +275,10 @@ public final class OutboundLink implements AutoCloseable {
         }
     }
 
-    /** Calls the writers' threads put on the wire themselves (an idle link's lone values). */
-    public long directCalls() {
+    /** Values the writers' threads sent ahead themselves (an idle link's lone values). */
+    public long aheadSends() {
         synchronized (lock) {
-            return directCalls;
+            return aheadSends;
         }
     }
 
@@ -278,68 +297,73 @@ public final class OutboundLink implements AutoCloseable {
         }
     }
 
-    /**
-     * Fails the direct call whose reply is overdue, if there is one. Its reply handler is retired with it and a
-     * new one takes its place, so a reply that comes after all (a partition healing) finds no handler instead of
-     * settling a later call.
-     */
-    void settleOverdueDirectCall() {
-        Batch overdue;
-        DirectDelivery retired;
-        int timeout;
-        synchronized (lock) {
-            if (directPending == null || closed || System.nanoTime() - directDeadlineNanos < 0) {
-                return;
-            }
-            overdue = directPending;
-            retired = direct;
-            timeout = retired.replyTimeoutMillis();
-            direct = DirectDelivery.open(id, sink, directReplies());
+    /** Under the lock: the link is idle, so the value just offered may go ahead from the writer's thread. */
+    private boolean mayGoAhead() {
+        if (!aheadPossible || inFlight != 0 || probing || broken || sendSeq != tailSeq - 1
+                || sendSeq - headSeq >= AHEAD_MAX || LinkFaults.armed()) {
+            return false;
         }
-        retired.close();
-        settle(overdue, -1, "no reply within " + timeout + " ms");
+        long now = System.nanoTime();
+        return now - lastReplyNanos < AHEAD_AFTER_REPLY_MILLIS * 1_000_000L && now - lastAheadNanos >= AHEAD_SPACING_NANOS;
     }
 
-    /** Under the lock: the link is idle, so the value just offered may go from the writer's thread. */
-    private boolean mayDeliverDirectly() {
-        return direct != null && directPending == null && inFlight == 0 && !probing && !broken
-                && sendSeq == tailSeq - 1 && !LinkFaults.armed()
-                && System.nanoTime() - lastReplyNanos < DIRECT_AFTER_REPLY_MILLIS * 1_000_000L;
+    /** Under the lock: the one value waiting, sent ahead; it stays unacknowledged until a reply covers it. */
+    private Batch takeAhead() {
+        Batch batch = takeBatch(sendSeq, tailSeq, false);
+        sendSeq = tailSeq;
+        aheadSends++;
+        if (aheadSinceNanos == 0) {
+            aheadSinceNanos = System.nanoTime();
+        }
+        return batch;
     }
 
-    /** Outside the lock, on the writer's thread: puts the call on the wire; its reply settles it. */
-    private void sendDirectly(DirectDelivery via, Batch batch) {
+    /** Outside the lock, on the writer's thread: a one-way call, back as soon as the request is written. */
+    private void sendAhead(Batch batch) {
         try {
-            via.send(batch.target(), delivery(batch));
+            batch.target().deliverAhead(delivery(batch));
+            // from the end of the send: a writer whose next value comes while this one was being sent is a burst
+            lastAheadNanos = System.nanoTime();
         } catch (SystemException e) {
-            settle(batch, -1, DirectDelivery.failure(e, id));
+            settle(batch, -1, failureOf(e, id));
         }
     }
 
-    private DirectDelivery.Replies directReplies() {
-        return new DirectDelivery.Replies() {
-            @Override
-            public void replied(long expected) {
-                Batch batch = pendingDirect();
-                if (batch != null) {
-                    settle(batch, expected, null);
-                }
-            }
-
-            @Override
-            public void failed(String reason) {
-                Batch batch = pendingDirect();
-                if (batch != null) {
-                    settle(batch, -1, reason);
-                }
-            }
-        };
+    /** What a failed call says, the same words whether it went ahead or from a sender thread. */
+    private static String failureOf(Exception e, long link) {
+        if (e instanceof UnknownLink) {
+            return "the peer does not know link " + link + " (it restarted and is not re-wired yet)";
+        }
+        return e.getClass().getSimpleName() + " " + e.getMessage();
     }
 
-    private Batch pendingDirect() {
-        synchronized (lock) {
-            return directPending;
+    /** Whether {@code sink} is a JacORB reference to another process. */
+    private static boolean inAnotherProcess(ValueSink sink) {
+        return sink instanceof ObjectImpl stub && stub._get_delegate() instanceof org.jacorb.orb.Delegate
+                && !stub._is_local();
+    }
+
+    /**
+     * Under the lock: values went ahead and no reply has moved {@link #headSeq} for {@value #AHEAD_CONFIRM_MILLIS} ms
+     * since — nothing else went to cover them, or one of them was lost and the peer holds back what came after it —
+     * or {@value #AHEAD_CONFIRM_VALUES} of them wait for a reply.
+     */
+    private boolean confirmationDue() {
+        if (aheadSinceNanos == 0 || broken || probing || headSeq == sendSeq || inFlight >= settings.window()) {
+            return false;
         }
+        // with nothing in flight, every value not yet acknowledged went ahead
+        return inFlight == 0 && sendSeq - headSeq >= AHEAD_CONFIRM_VALUES
+                || System.nanoTime() - aheadSinceNanos >= AHEAD_CONFIRM_MILLIS * 1_000_000L;
+    }
+
+    /** Under the lock: how long a parked caller may wait before a confirmation is due; 0 when none is waited for. */
+    private long confirmationWaitMillis() {
+        if (aheadSinceNanos == 0 || broken) {
+            return 0;
+        }
+        long dueIn = AHEAD_CONFIRM_MILLIS * 1_000_000L - (System.nanoTime() - aheadSinceNanos);
+        return Math.max(1, (dueIn + 999_999) / 1_000_000);
     }
 
     /**
@@ -363,8 +387,13 @@ public final class OutboundLink implements AutoCloseable {
                 if (closed) {
                     return null;
                 }
+                if (confirmationDue()) {
+                    aheadSinceNanos = System.nanoTime(); // the next confirmation, if this one's reply does not cover all
+                    return takeBatch(headSeq, sendSeq, true); // sends again what went ahead: the reply covers it
+                }
                 if (readyToSend()) {
-                    Batch batch = takeBatch(false);
+                    Batch batch = takeBatch(sendSeq, tailSeq, true);
+                    sendSeq += batch.values().length;
                     if (waitingCallers > 0 && readyToSend()) {
                         lock.notify(); // values offered during a watch were not announced: share them out
                     }
@@ -373,7 +402,7 @@ public final class OutboundLink implements AutoCloseable {
                 if (watching || !mayWatch || !idleWithRoom() || settings.spinMicros() == 0) {
                     waitingCallers++;
                     try {
-                        lock.wait(broken ? settings.retryMillis() : 0);
+                        lock.wait(broken ? settings.retryMillis() : confirmationWaitMillis());
                     } catch (InterruptedException e) {
                         return null;
                     } finally {
@@ -408,15 +437,18 @@ public final class OutboundLink implements AutoCloseable {
         }
     }
 
-    /** Under the lock: the next batch, cut where the origin stream or its numbering changes. */
-    private Batch takeBatch(boolean sentDirectly) {
-        int max = (int) Math.min(tailSeq - sendSeq, settings.batchMax());
-        int first = (int) (sendSeq & mask);
+    /**
+     * Under the lock: the values from {@code from} (at most up to {@code limit}) as one batch, cut where the origin
+     * stream or its numbering changes; a two-way call's batch counts against the window.
+     */
+    private Batch takeBatch(long from, long limit, boolean twoWay) {
+        int max = (int) Math.min(limit - from, settings.batchMax());
+        int first = (int) (from & mask);
         String originStream = originStreams[first];
         long originFirstSeq = originSeqs[first];
         int n = 1;
         while (n < max) {
-            int slot = (int) ((sendSeq + n) & mask);
+            int slot = (int) ((from + n) & mask);
             if (!originStreams[slot].equals(originStream) || originSeqs[slot] != originFirstSeq + n) {
                 break;
             }
@@ -424,23 +456,17 @@ public final class OutboundLink implements AutoCloseable {
         }
         Object[] values = new Object[n];
         for (int i = 0; i < n; i++) {
-            values[i] = ring[(int) ((sendSeq + i) & mask)];
+            values[i] = ring[(int) ((from + i) & mask)];
         }
-        Batch batch = new Batch(sink, generation, sendSeq, originStream, originFirstSeq, values, sentDirectly);
-        sendSeq += n;
-        inFlight++;
-        if (sentDirectly) {
-            directPending = batch;
-            directCalls++;
-            int timeout = direct.replyTimeoutMillis();
-            directDeadlineNanos = System.nanoTime() + (timeout > 0 ? timeout : Integer.MAX_VALUE) * 1_000_000L;
+        if (twoWay) {
+            inFlight++;
         }
-        return batch;
+        return new Batch(sink, generation, from, originStream, originFirstSeq, values, twoWay);
     }
 
     /** One call's worth: consecutive values of one origin stream, for the sink of one generation. */
     private record Batch(ValueSink target, long generation, long firstSeq, String originStream, long originFirstSeq,
-                         Object[] values, boolean sentDirectly) {
+                         Object[] values, boolean twoWay) {
     }
 
     private boolean readyToSend() {
@@ -472,7 +498,7 @@ public final class OutboundLink implements AutoCloseable {
             failure = null;
         } catch (UnknownLink | SystemException e) {
             expected = -1;
-            failure = DirectDelivery.failure(e, id);
+            failure = failureOf(e, id);
         }
         long callMillis = (System.nanoTime() - callStarted) / 1_000_000;
         synchronized (lock) {
@@ -486,14 +512,10 @@ public final class OutboundLink implements AutoCloseable {
         boolean restored = false;
         boolean newlyBroken = false;
         synchronized (lock) {
-            if (batch.sentDirectly()) {
-                if (directPending != batch) {
-                    return; // settled already: its deadline passed, or the link was re-pointed
-                }
-                directPending = null;
-            }
             if (batch.generation() == generation) {
-                inFlight--;
+                if (batch.twoWay()) {
+                    inFlight--;
+                }
                 if (failure == null) {
                     acknowledge(expected);
                     lastReplyNanos = System.nanoTime();
@@ -504,6 +526,7 @@ public final class OutboundLink implements AutoCloseable {
                     newlyBroken = !broken;
                     broken = true;
                     sendSeq = headSeq;
+                    aheadSinceNanos = 0; // what went ahead is sent again from headSeq once the peer answers
                     probing = true;
                     nextProbeNanos = System.nanoTime() + settings.retryMillis() * 1_000_000L;
                 }
@@ -521,7 +544,8 @@ public final class OutboundLink implements AutoCloseable {
 
     private void acknowledge(long expected) {
         long upTo = Math.min(expected, tailSeq);
-        if (upTo > headSeq) {
+        boolean progress = upTo > headSeq;
+        if (progress) {
             lastProgressNanos = System.nanoTime();
             fullSinceNanos = 0;
             stallReported = false;
@@ -534,6 +558,11 @@ public final class OutboundLink implements AutoCloseable {
         if (sendSeq < headSeq) {
             sendSeq = headSeq;
         }
+        if (aheadSinceNanos != 0 && progress) {
+            // all covered: the clock stops; some not yet (sent while this call flew): it starts again. Without
+            // progress it runs on, so a value lost ahead is sent again even while other calls keep replying.
+            aheadSinceNanos = headSeq == sendSeq ? 0 : System.nanoTime();
+        }
         if (writerWaiting) {
             writerWaiting = false;
         }
@@ -541,16 +570,9 @@ public final class OutboundLink implements AutoCloseable {
 
     @Override
     public void close() {
-        DirectDelivery last;
-        DirectCallWatch.forget(this);
         synchronized (lock) {
             closed = true;
-            last = direct;
-            direct = null;
             lock.notifyAll();
-        }
-        if (last != null) {
-            last.close();
         }
         for (Thread t : callers) {
             t.interrupt();

@@ -47,7 +47,7 @@ import org.slf4j.LoggerFactory;
  */
 public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(RuntimeLocalNetwork.class);
-    private static final ThreadLocal<Injection> INJECTING = new ThreadLocal<>();
+    private static final ThreadLocal<Injection> INJECTING = ThreadLocal.withInitial(Injection::new);
 
     private final String hostName;
     private final RuntimeNetwork runtime;
@@ -352,11 +352,29 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
 
     @Override
     public void inject(NodeRef data, Object value, String originHost, ValueOrigin origin) {
-        INJECTING.set(new Injection(data, originHost, origin));
+        Injection injection = INJECTING.get();
+        if (injection.active()) {
+            injectNested(data, value, originHost, origin);
+            return;
+        }
+        injection.begin(data, originHost, origin);
         try {
             controller.setValue(data, toRuntime(value));
         } finally {
-            INJECTING.remove();
+            injection.end();
+        }
+    }
+
+    /** An injection while another is under way on this thread: its own record, the outer one put back after. */
+    private void injectNested(NodeRef data, Object value, String originHost, ValueOrigin origin) {
+        Injection outer = INJECTING.get();
+        Injection inner = new Injection();
+        inner.begin(data, originHost, origin);
+        INJECTING.set(inner);
+        try {
+            controller.setValue(data, toRuntime(value));
+        } finally {
+            INJECTING.set(outer);
         }
     }
 
@@ -364,7 +382,7 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
     public AutoCloseable observe(NodeRef data, ValueObserver observer) {
         return controller.observe(data, (ref, id, value) -> {
             Injection injection = INJECTING.get();
-            if (injection != null && injection.isOf(ref, value)) {
+            if (injection.isOf(ref, value)) {
                 observer.onValue(toJava(value), injection.host, injection.origin);
             } else {
                 observer.onValue(toJava(value), null, null);
@@ -378,26 +396,40 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
      * later value — of that Data or another, written by a Relation the injected value fired — is local.
      */
     private static final class Injection {
-        private final NodeRef data;
-        private final String host;
-        private final ValueOrigin origin;
+        private NodeRef data;
+        private String host;
+        private ValueOrigin origin;
         private Value stored;
 
-        Injection(NodeRef data, String host, ValueOrigin origin) {
-            this.data = data;
-            this.host = host;
-            this.origin = origin;
+        /** One per thread, reused for every value a link injects on it: a link applies millions a second. */
+        void begin(NodeRef injected, String fromHost, ValueOrigin from) {
+            this.data = injected;
+            this.host = fromHost;
+            this.origin = from;
+            this.stored = null;
+        }
+
+        void end() {
+            data = null;
+            host = null;
+            origin = null;
+            stored = null;
+        }
+
+        boolean active() {
+            return data != null;
         }
 
         /** Whether {@code value}, stored in {@code ref}, is the injected value (each observer asks). */
         boolean isOf(NodeRef ref, Value value) {
-            if (!data.equals(ref)) {
+            if (stored != null) {
+                return stored == value; // each store is a value of its own: the same object is the same Data's
+            }
+            if (data == null || !data.equals(ref)) {
                 return false;
             }
-            if (stored == null) {
-                stored = value;
-            }
-            return stored == value;
+            stored = value;
+            return true;
         }
     }
 

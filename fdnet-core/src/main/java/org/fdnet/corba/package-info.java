@@ -19,8 +19,9 @@
  * JacORB's POA queue and drops calls); sequence numbers keep them in order, and a value leaves the sender
  * only when the receiver has applied it, so a restarted receiver gets everything it missed. The engine hands
  * values to a link under its commit lock, so a link never waits for a reply there: an idle link's lone value
- * goes on the wire from the writer's thread as an asynchronous two-way call ({@link org.fdnet.corba.DirectDelivery},
- * its reply read on the ORB's reader thread), everything else through the link's sender threads.
+ * goes ahead from the writer's thread as a one-way call, kept by the sender until a later two-way call's reply
+ * covers it (a sender thread confirms it shortly after, sending it again; see {@link org.fdnet.corba.OutboundLink}),
+ * everything else through the link's sender threads.
  *
  * <p>Class map: {@link org.fdnet.corba.OrbRuntime} starts ORBs (JDK 17 fixes) from
  * {@link org.fdnet.corba.OrbSettings} (every JacORB key); {@link org.fdnet.corba.NamingService} runs

@@ -44,7 +44,7 @@ class OutboundLinkTest {
         List<Long> batchSizes = new CopyOnWriteArrayList<>();
         // Like InboundLink: with two calls in flight a batch can arrive before the one ahead of it; it is
         // held back, and the answer is always the next sequence number expected, never more.
-        ValueSink sink = ValueSinkHelper.narrow(orb.activate(new ValueSinkPOA() {
+        ValueSink sink = ValueSinkHelper.narrow(orb.activate(new TestValueSink() {
             private final TreeMap<Long, ValueBatch> heldBack = new TreeMap<>();
             private long expected = -1;
 
@@ -83,7 +83,7 @@ class OutboundLinkTest {
     @Test
     void shouldNotBlockAWriterForeverWhenThePeerStopsAcknowledging() throws Exception {
         CountDownLatch release = new CountDownLatch(1);
-        ValueSink sink = ValueSinkHelper.narrow(orb.activate(new ValueSinkPOA() {
+        ValueSink sink = ValueSinkHelper.narrow(orb.activate(new TestValueSink() {
             @Override
             public long deliver(ValueBatch batch) {
                 try {
@@ -113,7 +113,7 @@ class OutboundLinkTest {
         // checks that each value travels under its own sequence number: value i is written i-th.
         List<Long> received = new CopyOnWriteArrayList<>();
         List<String> misplaced = new CopyOnWriteArrayList<>();
-        ValueSink sink = ValueSinkHelper.narrow(orb.activate(new ValueSinkPOA() {
+        ValueSink sink = ValueSinkHelper.narrow(orb.activate(new TestValueSink() {
             @Override
             public long deliver(ValueBatch batch) {
                 for (int i = 0; i < batch.values.length; i++) {
@@ -153,7 +153,7 @@ class OutboundLinkTest {
 
     @Test
     void shouldParkAnIdleLinksSendersOnceTheWatchRunsOut() throws Exception {
-        ValueSink sink = ValueSinkHelper.narrow(orb.activate(new ValueSinkPOA() {
+        ValueSink sink = ValueSinkHelper.narrow(orb.activate(new TestValueSink() {
             @Override
             public long deliver(ValueBatch batch) {
                 return batch.firstSeq + batch.values.length;

@@ -162,7 +162,7 @@ final class BenchTopology implements AutoCloseable {
     String[] linkReport() {
         return a.servant().outboundLinks().stream()
                 .map(l -> l.description() + ": " + l.acknowledged() + " acknowledged, " + l.lost() + " lost, "
-                        + l.directCalls() + " calls from the writer's thread")
+                        + l.aheadSends() + " values sent ahead from the writer's thread")
                 .toArray(String[]::new);
     }
 

@@ -29,7 +29,7 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "export", mixinStandardHelpOptions = true,
         description = {"Export a recorded run of --events rows to MCAP (and CSV) against a bare COPY (SELECT ...) TO STDOUT",
-            "of the same rows in the same run; prints both rates, the ratio (target >= 50%) and the load average."})
+            "of the same rows in the same run; prints both rates, the ratio (target >= 50%%) and the load average."})
 public final class BenchExportCommand implements Callable<Integer> {
     @Option(names = "--events", defaultValue = "1000000", description = "rows in the run (default ${DEFAULT-VALUE})")
     long events;

@@ -21,6 +21,8 @@ import org.fdnet.logger.store.EmbeddedDatabase;
  * reaches its database. {@link #close()} ends every one of them.
  */
 final class SoakCluster implements AutoCloseable {
+    /** How long the logger host's relay to PostgreSQL may take to listen. */
+    private static final long RELAY_TIMEOUT_MILLIS = 10_000;
     private static final long START_TIMEOUT_MILLIS = 120_000;
     private static final String LOGGER_READY = "fdnet logger: cores ->";
     /** How often each host prints what it holds for unreachable peers ({@code fdnet host --health-every}). */
@@ -136,6 +138,39 @@ final class SoakCluster implements AutoCloseable {
         } catch (IOException e) {
             throw new IOException("cannot start the logger host's relay to PostgreSQL (" + String.join(" ", command)
                     + "): " + e.getMessage() + "; it needs socat: apt-get install -y socat", e);
+        }
+        awaitRelay(argv);
+    }
+
+    /**
+     * Returns once the relay listens on the logger host's loopback (the logger gives up at once on a refused
+     * database connection), asking {@code ss} on that host.
+     */
+    private void awaitRelay(List<String> onLoggerHost) throws IOException {
+        List<String> listening = new ArrayList<>(onLoggerHost);
+        listening.addAll(List.of("ss", "-Hltn", "sport = :" + databasePort));
+        long deadline = System.nanoTime() + RELAY_TIMEOUT_MILLIS * 1_000_000L;
+        while (true) {
+            if (!relay.isAlive()) {
+                throw new IOException("the logger host's relay to PostgreSQL stopped: "
+                        + Files.readString(work.resolve("relay.log")).strip());
+            }
+            Process ss = new ProcessBuilder(listening).redirectErrorStream(true).start();
+            String out = new String(ss.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+            try {
+                ss.waitFor();
+                if (!out.isBlank() && ss.exitValue() == 0) {
+                    return;
+                }
+                if (System.nanoTime() > deadline) {
+                    throw new IOException("the logger host's relay to PostgreSQL did not listen on 127.0.0.1:"
+                            + databasePort + " within " + RELAY_TIMEOUT_MILLIS + " ms");
+                }
+                Thread.sleep(50);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IOException("interrupted while waiting for the relay to PostgreSQL", e);
+            }
         }
     }
 

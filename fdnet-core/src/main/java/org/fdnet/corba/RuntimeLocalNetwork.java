@@ -352,29 +352,20 @@ public final class RuntimeLocalNetwork implements LocalNetwork, AutoCloseable {
 
     @Override
     public void inject(NodeRef data, Object value, String originHost, ValueOrigin origin) {
-        Injection injection = INJECTING.get();
-        if (injection.active()) {
-            injectNested(data, value, originHost, origin);
-            return;
+        Injection current = INJECTING.get();
+        // an injection while another is under way on this thread gets a record of its own; the outer one comes back
+        Injection injection = current.active() ? new Injection() : current;
+        if (injection != current) {
+            INJECTING.set(injection);
         }
         injection.begin(data, originHost, origin);
         try {
             controller.setValue(data, toRuntime(value));
         } finally {
             injection.end();
-        }
-    }
-
-    /** An injection while another is under way on this thread: its own record, the outer one put back after. */
-    private void injectNested(NodeRef data, Object value, String originHost, ValueOrigin origin) {
-        Injection outer = INJECTING.get();
-        Injection inner = new Injection();
-        inner.begin(data, originHost, origin);
-        INJECTING.set(inner);
-        try {
-            controller.setValue(data, toRuntime(value));
-        } finally {
-            INJECTING.set(outer);
+            if (injection != current) {
+                INJECTING.set(current);
+            }
         }
     }
 

@@ -43,11 +43,7 @@ class AheadDeliveryTest {
 
     @Test
     void shouldSendLoneValuesAheadAndFreeThemWhenAConfirmationCoversThem() throws Exception {
-        RecordingSink sink = new RecordingSink();
-        link = linkTo(sink);
-
-        link.offer(0L); // the first call probes the peer through a sender thread
-        awaitTrue(() -> link.acknowledged() == 1);
+        RecordingSink sink = probedLink();
         for (long v = 1; v <= 20; v++) {
             link.offer(v);
             long value = v;
@@ -66,10 +62,7 @@ class AheadDeliveryTest {
 
     @Test
     void shouldCarryABurstInBatchesAndNeverFloodThePeerWithValuesSentAhead() throws Exception {
-        RecordingSink sink = new RecordingSink();
-        link = linkTo(sink);
-        link.offer(0L);
-        awaitTrue(() -> link.acknowledged() == 1);
+        RecordingSink sink = probedLink();
 
         for (long v = 1; v <= 20_000; v++) {
             link.offer(v);
@@ -84,10 +77,7 @@ class AheadDeliveryTest {
 
     @Test
     void shouldLeaveAValueToTheSenderThreadsWhenThePeerHasBeenSilentForASecond() throws Exception {
-        RecordingSink sink = new RecordingSink();
-        link = linkTo(sink);
-        link.offer(0L);
-        awaitTrue(() -> link.acknowledged() == 1);
+        RecordingSink sink = probedLink();
 
         Thread.sleep(OutboundLink.AHEAD_AFTER_REPLY_MILLIS + 200); // its connection may be closed by now
         link.offer(1L);
@@ -101,10 +91,7 @@ class AheadDeliveryTest {
 
     @Test
     void shouldSendAgainAValueLostAheadAndApplyEachValueOnceInOrder() throws Exception {
-        RecordingSink sink = new RecordingSink();
-        link = linkTo(sink);
-        link.offer(0L);
-        awaitTrue(() -> link.acknowledged() == 1);
+        RecordingSink sink = probedLink();
 
         sink.loseAheadValue(1);
         link.offer(1L); // lost on the way
@@ -119,10 +106,7 @@ class AheadDeliveryTest {
 
     @Test
     void shouldBreakTheLinkWhenAConfirmationGoesUnansweredAndApplyItsValueOnce() throws Exception {
-        RecordingSink sink = new RecordingSink();
-        link = linkTo(sink);
-        link.offer(0L);
-        awaitTrue(() -> link.acknowledged() == 1);
+        RecordingSink sink = probedLink();
 
         sink.holdNextReplyMillis(3 * REPLY_TIMEOUT_MILLIS); // the confirmation is answered long after the timeout
         link.offer(1L);
@@ -139,6 +123,15 @@ class AheadDeliveryTest {
         assertThat(link.broken()).isFalse();
         assertThat(states.get(0)).startsWith("broken: TIMEOUT");
         assertThat(states.get(1)).isEqualTo("restored");
+    }
+
+    /** A link to a new sink whose first value, 0, went through a sender thread (a new link probes its peer). */
+    private RecordingSink probedLink() throws InterruptedException {
+        RecordingSink sink = new RecordingSink();
+        link = linkTo(sink);
+        link.offer(0L);
+        awaitTrue(() -> link.acknowledged() == 1);
+        return sink;
     }
 
     private OutboundLink linkTo(RecordingSink servant) {

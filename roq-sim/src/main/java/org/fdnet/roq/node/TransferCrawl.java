@@ -441,7 +441,8 @@ public class TransferCrawl extends Relation {
             ty = fromY + st * fx + ct * across;
         }
         double[] here = footGround(l);
-        path.start(here[0], here[1], gz[l], tx, ty, expectedGround(l), clearance);
+        path.start(here[0], here[1], gz[l], tx, ty, expectedGround(l), planReach ? highestGround(l) : expectedGround(l),
+                clearance);
     }
 
     /** The foot under re-placing goes back {@code retreat} m (unless it has been set back {@code tries} times). */
@@ -783,6 +784,17 @@ public class TransferCrawl extends Relation {
         for (int k = 0; k < LEGS; k++) {
             if (k != l) {
                 s += gz[k] / 3;
+            }
+        }
+        return s;
+    }
+
+    /** The highest of the ground the feet other than {@code l} stand on: a planned swing moves over it. */
+    private double highestGround(int l) {
+        double s = Double.NEGATIVE_INFINITY;
+        for (int k = 0; k < LEGS; k++) {
+            if (k != l) {
+                s = Math.max(s, gz[k]);
             }
         }
         return s;

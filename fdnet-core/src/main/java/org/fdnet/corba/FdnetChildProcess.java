@@ -61,6 +61,9 @@ public final class FdnetChildProcess implements AutoCloseable {
         List<String> command = new ArrayList<>(launchPrefix);
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         command.add("-Xss1m");
+        if (QuickJitCommands.matches(fdnetArgs)) {
+            command.add(QuickJitCommands.OPTION);
+        }
         command.addAll(jvmOptions);
         command.add("-cp");
         command.add(System.getProperty("java.class.path"));

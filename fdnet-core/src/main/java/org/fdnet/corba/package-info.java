@@ -66,5 +66,9 @@
  *                 allowed: as before        refused: NO_PERMISSION (or a refused change) naming certificate,
  *                                                    node or module and right; nothing applied
  * </pre>
+ *
+ * <p>Child processes: benchmarks and multi-process tests start {@code fdnet} commands in child JVMs through
+ * {@link org.fdnet.corba.FdnetChildProcess}, with the JVM options the launcher would give the same command (the short
+ * commands of {@link org.fdnet.corba.QuickJitCommands} stop their JIT at C1).
  */
 package org.fdnet.corba;

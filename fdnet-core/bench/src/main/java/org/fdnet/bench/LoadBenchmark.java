@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import javax.xml.parsers.SAXParserFactory;
+import org.fdnet.corba.QuickJitCommands;
 import org.fdnet.netinfo.ConnectionInfo;
 import org.fdnet.netinfo.ConnectionKind;
 import org.fdnet.netinfo.ModuleInfo;
@@ -149,7 +150,9 @@ public final class LoadBenchmark implements Callable<Integer> {
         double coldLoad = median(cold.load());
         double coldDescendants = median(cold.descendants());
         out.println();
-        out.printf("cold: fresh JVM, nothing before the call (what fdnet validate pays), %d JVMs each%n", coldRuns);
+        out.printf("cold: fresh JVM, nothing before the call (what fdnet validate pays), %d JVMs each; JIT %s,"
+                + " as the launcher runs fdnet validate%n", coldRuns,
+                QuickJitCommands.matches(List.of("validate")) ? "stopped at C1" : "tiered C1 + C2");
         out.printf("%-50s %10s %10s %10s%n", "", "median ms", "best ms", "worst ms");
         coldRow(out, "baseline: bare SAX parse, fresh JVM", cold.bare());
         coldRow(out, "load + validate, fresh JVM", cold.load());

@@ -39,6 +39,7 @@ public final class GraphCanvas extends JComponent implements SceneListener {
     private double panX;
     private double panY;
     private Rectangle2D rubberBand;
+    private final DragBackdrop backdrop = new DragBackdrop();
     private Font namesFont = Java2DSketch.PLAIN;
     private Consumer<NodeRef> onActivate = ref -> { };
     private BiConsumer<Point, NodeRef> onPopup = (p, ref) -> { };
@@ -120,13 +121,24 @@ public final class GraphCanvas extends JComponent implements SceneListener {
     protected void paintComponent(Graphics graphics) {
         Graphics2D g = (Graphics2D) graphics.create();
         try {
-            g.setColor(getBackground());
-            g.fillRect(0, 0, getWidth(), getHeight());
             Rectangle clip = g.getClipBounds();
             AffineTransform t = transform();
-            g.transform(t);
             Rectangle2D modelClip = clip == null ? null : inverse(t).createTransformedShape(clip).getBounds2D();
-            painter.paint(new Java2DSketch(g, zoom >= GraphPainter.LABEL_SCALE, namesFont), modelClip, zoom);
+            boolean smooth = zoom >= GraphPainter.LABEL_SCALE;
+            if (dragging()) {
+                backdrop.copyTo(g, scene.stillRevision(), t, getWidth(), getHeight(), getBackground(), still -> {
+                    still.transform(t);
+                    painter.paint(new Java2DSketch(still, smooth, namesFont), null, zoom, GraphPainter.Layer.STILL);
+                });
+                g.transform(t);
+                painter.paint(new Java2DSketch(g, smooth, namesFont), modelClip, zoom, GraphPainter.Layer.MOVING);
+            } else {
+                backdrop.clear();
+                g.setColor(getBackground());
+                g.fillRect(0, 0, getWidth(), getHeight());
+                g.transform(t);
+                painter.paint(new Java2DSketch(g, smooth, namesFont), modelClip, zoom);
+            }
             if (rubberBand != null) {
                 g.setColor(new Color(0x1F6FEB));
                 g.setStroke(new BasicStroke((float) (1 / zoom)));
@@ -137,6 +149,19 @@ public final class GraphCanvas extends JComponent implements SceneListener {
         } finally {
             g.dispose();
         }
+    }
+
+    /**
+     * The selected nodes have moved since anything else changed: the frame is the backdrop of what stays, with the
+     * selection and its connections painted over it.
+     */
+    private boolean dragging() {
+        return !scene.selection().isEmpty() && scene.revision() != scene.stillRevision();
+    }
+
+    /** Whether the last frame was painted over a drag backdrop (for tests). */
+    boolean paintedOverBackdrop() {
+        return backdrop.held();
     }
 
     @Override

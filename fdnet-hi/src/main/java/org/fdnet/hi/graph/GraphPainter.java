@@ -45,10 +45,19 @@ public final class GraphPainter {
      * which keeps a zoomed-out 1,000-node drawing fluid.
      */
     public void paint(Sketch sketch, Rectangle2D clip, double scale) {
+        paint(sketch, clip, scale, Layer.ALL);
+    }
+
+    /** As above, only what belongs to {@code layer}. */
+    public void paint(Sketch sketch, Rectangle2D clip, double scale, Layer layer) {
         labels = scale >= LABEL_SCALE;
         Set<NodeRef> lit = scene.highlighted();
+        Set<NodeRef> moving = scene.selection();
         boolean fading = !lit.isEmpty();
         for (ConnectionRef c : scene.visibleConnections()) {
+            if (!layer.has(moving.contains(c.connection().data()) || moving.contains(c.connection().relation()))) {
+                continue;
+            }
             Line2D s = scene.segment(c.connection());
             if (s == null || clip != null && !s.getBounds2D().intersects(clip) && !clip.intersectsLine(s)) {
                 continue;
@@ -57,11 +66,24 @@ public final class GraphPainter {
             paintConnection(sketch, s, c, faded);
         }
         for (NodeRef ref : scene.visibleNodes()) {
+            if (!layer.has(moving.contains(ref))) {
+                continue;
+            }
             Rectangle2D b = scene.bounds(ref);
             if (b == null || clip != null && !b.intersects(clip)) {
                 continue;
             }
             paintNode(sketch, ref, b, fading && !lit.contains(ref));
+        }
+    }
+
+    /** What a paint covers: everything, or, while the selection is dragged, what stays or what moves with it. */
+    public enum Layer {
+        ALL, STILL, MOVING;
+
+        /** Whether a node, or a connection, that moves with the selection or not belongs to this layer. */
+        boolean has(boolean movesWithSelection) {
+            return this == ALL || movesWithSelection == (this == MOVING);
         }
     }
 

@@ -40,6 +40,9 @@ public final class GraphScene {
 
     private final UndoableNetworkEditor editor;
     private final List<SceneListener> listeners = new CopyOnWriteArrayList<>();
+    /** Counts every change to what is drawn; {@link #stillRevision} counts all of them but moves of the selection. */
+    private long revision;
+    private long stillRevision;
     private final Set<NodeRef> selected = new LinkedHashSet<>();
     private ConnectionRef selectedConnection;
     private final Set<NodeRef> highlighted = new LinkedHashSet<>();
@@ -288,7 +291,22 @@ public final class GraphScene {
                 layout().put(ref, new NodeLayout(at.x() + dx, at.y() + dy, at.width(), at.height(), at.colour()));
             }
         }
-        viewChanged();
+        layoutChanged = true;
+        revision++;
+        notifyScene();
+    }
+
+    /** Counts every change to what is drawn. */
+    public long revision() {
+        return revision;
+    }
+
+    /**
+     * The {@link #revision} of the last change other than a move of the selected nodes: while it stays, everything
+     * but the selected nodes and their connections is drawn as it was (what a drag repaints on).
+     */
+    public long stillRevision() {
+        return stillRevision;
     }
 
     /** Lays out every node anew with ELK, forgetting positions (sizes and colours stay). */
@@ -355,6 +373,7 @@ public final class GraphScene {
     }
 
     private void fireValues() {
+        stillRevision = ++revision;
         for (SceneListener l : listeners) {
             l.valuesChanged();
         }
@@ -452,12 +471,18 @@ public final class GraphScene {
     }
 
     private void fireScene() {
+        stillRevision = ++revision;
+        notifyScene();
+    }
+
+    private void notifyScene() {
         for (SceneListener l : listeners) {
             l.sceneChanged();
         }
     }
 
     private void fireSelection() {
+        stillRevision = ++revision;
         for (SceneListener l : listeners) {
             l.selectionChanged();
         }

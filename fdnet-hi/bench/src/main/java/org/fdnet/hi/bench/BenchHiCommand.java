@@ -79,7 +79,8 @@ public final class BenchHiCommand implements Callable<Integer> {
         NetworkInfo network = NetworkRepository.load(file);
         double[] elk = new double[runs];
         double[] open = new double[runs];
-        out.println("JIT: " + jitMode() + "; timing the first (cold) open + layout and the bare ELK call ...");
+        out.println("JIT: " + jitMode() + "; layout: " + layoutMode(network)
+                + "; timing the first (cold) open + layout and the bare ELK call ...");
         out.flush();
         double openFirst = millis(() -> OpenNetwork.load(file));
         double elkFirst = millis(() -> ElkLayeredLayout.positions(network, r -> new NodeSize(120, 40)));
@@ -104,6 +105,14 @@ public final class BenchHiCommand implements Callable<Integer> {
                 verdict(Math.max(openFirst, median(open)) <= 2000), openFirst, median(open), verdict(Math.min(fps, fpsClose) >= 30));
         out.flush();
         return 0;
+    }
+
+    /** How the editor lays this network out (see ElkLayeredLayout). */
+    private static String layoutMode(NetworkInfo network) {
+        int nodes = network.modules().stream().mapToInt(m -> m.nodes().size()).sum();
+        return nodes >= ElkLayeredLayout.BY_MODULE_FROM && network.modules().size() > 1
+                ? String.format("module by module (%,d nodes, at least %,d)", nodes, ElkLayeredLayout.BY_MODULE_FROM)
+                : String.format("one graph (%,d nodes, under %,d)", nodes, ElkLayeredLayout.BY_MODULE_FROM);
     }
 
     /** Which compilers this JVM runs: the launcher stops the editor's at C1 (see bin/fdnet). */

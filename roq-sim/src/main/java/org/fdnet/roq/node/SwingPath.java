@@ -5,7 +5,8 @@ package org.fdnet.roq.node;
  * frame): it first <b>rises</b> straight up (at most {@code clearance}) until its sole has left the ground and it is
  * {@code clearance}/3 up (a
  * foot that went forward while still bearing load was driven into whatever stood before it), then <b>moves</b> over
- * to above its foothold, {@code clearance} above the higher of the two grounds, and then <b>descends</b> at
+ * to above its foothold, {@code clearance} above the higher of the two grounds (or of the ground it is told to pass
+ * over), and then <b>descends</b> at
  * {@code descent} m/s until its sole finds the ground — or has gone {@code depth} m below where the ground was
  * expected without finding it (no footing).
  */
@@ -19,6 +20,7 @@ final class SwingPath {
     private double toX;
     private double toY;
     private double groundZ;
+    private double overZ;
     private double clearance;
     private double moveTime;
     private double t;
@@ -42,6 +44,15 @@ final class SwingPath {
      * Starts a swing from (x, y, z) to the foothold (toX, toY) whose ground is expected at height {@code groundZ}.
      */
     void start(double x, double y, double z, double toX, double toY, double groundZ, double clearance) {
+        start(x, y, z, toX, toY, groundZ, groundZ, clearance);
+    }
+
+    /**
+     * Starts a swing as {@link #start(double, double, double, double, double, double, double)} does that moves over
+     * at {@code clearance} above {@code overZ} when that is higher than the expected ground.
+     */
+    void start(double x, double y, double z, double toX, double toY, double groundZ, double overZ, double clearance) {
+        this.overZ = Math.max(groundZ, overZ);
         this.fromX = x;
         this.fromY = y;
         this.fromZ = z;
@@ -74,7 +85,7 @@ final class SwingPath {
                 double w = u * u * (3 - 2 * u);
                 x = fromX + (toX - fromX) * w;
                 y = fromY + (toY - fromY) * w;
-                double top = Math.max(fromZ, groundZ + clearance);
+                double top = Math.max(fromZ, overZ + clearance);
                 z += Math.max(-riseSpeed * dt, Math.min(riseSpeed * dt, top - z)) ;
                 if (u >= 1) {
                     stage = Stage.DESCEND;

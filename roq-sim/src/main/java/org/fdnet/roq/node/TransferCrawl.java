@@ -33,6 +33,16 @@ import org.fdnet.runtime.Value;
  *   centre and comes down until its sole finds the ground ({@link SwingPath}); it is the next step's N.</li>
  * </ol>
  *
+ * <p>With {@code planReach} the steps are planned against each leg's reach and load ({@link LegReach}): the legs
+ * go in turn around the body (hind-right, front-right, front-left, hind-left), so that N and L are on one side or at
+ * one end and the weight that goes onto N is the weight that comes off L with the body near the feet's centre; the
+ * shift goes to the place nearest where the body stands best over its feet ({@code lead} of the stride ahead of their
+ * centre) at which the weight comes down inside the triangle by {@code margin} and with at least {@code leastLoad} on
+ * each of its feet, N carries at least {@code proofShare}, every foot stays within its leg's reach, and no other foot
+ * is planned to carry more than 0.9 of what it bore when proved or its leg can hold — in that precedence, the last
+ * given up first when not all can hold ({@link PlanarConstraints}); and the foothold is beside the feet's centre,
+ * half a stride ahead of its hip where the body stands, no farther than its reach less {@code reachMargin} of it.
+ *
  * <p>Feet that stay where they were set: a foot is held where it found the ground (its sensed place against the
  * other feet's), not where it was sent, so the legs do not push against each other through the ground. Its sensed
  * place (joint angles, {@link SensedFeet}) against the body's motion (the mean of the feet's) tells if it slid more
@@ -47,6 +57,8 @@ import org.fdnet.runtime.Value;
 public class TransferCrawl extends Relation {
     /** hr, fr, hl, fl. */
     static final int[] ORDER = {3, 1, 2, 0};
+    /** hr, fr, fl, hl: around the body, the order of the planned crawl ({@code planReach}). */
+    static final int[] AROUND_ORDER = {3, 1, 0, 2};
     /** How far a standing foot may slide before it is re-placed, m. */
     static final double SLIP = 0.02;
     /** How long a foot must stand that far off before it counts as slid (not a jolt of the body), s. */
@@ -65,6 +77,11 @@ public class TransferCrawl extends Relation {
     private static final double THERE = 0.005;
     /** The longest a shift waits for the margin before the crawl goes on regardless, s. */
     private static final double MOST_SHIFT_WAIT = 3;
+    /** The longest an unloading waits while it would ask a foot for more than it bore when proved, s. */
+    private static final double MOST_OVERLOAD_WAIT = 1;
+    /** The part of its proved load the shift plans a foot to carry at most, and the part it may be asked for. */
+    private static final double PLANNED_OF_PROVEN = 0.9;
+    private static final double ASKED_OF_PROVEN = 1.05;
     /** The longest a foot rises waiting for its sole to come free before the lift is given up, s. */
     private static final double MOST_RISE = 1.0;
     /** A sole under this carries nothing; a sole at this has found the ground, N. */
@@ -93,7 +110,20 @@ public class TransferCrawl extends Relation {
     public static final ParameterSpec<Double> MARGIN = ParameterSpec.number("margin").unit("m").range(0, 0.15)
             .defaultValue(0.03).describe("how far inside the triangle of the three others the weight must be before a leg unloads");
     public static final ParameterSpec<Double> PROOF_SHARE = ParameterSpec.number("proofShare").unit("weight")
-            .range(1.0 / 3, 0.5).defaultValue(0.4).describe("the share of the weight the foot being proved carries while the next leg swings");
+            .range(1.0 / 3, 0.5).defaultValue(0.4).describe("the share of the weight the foot being proved carries while the next leg swings (planned: at least)");
+    public static final ParameterSpec<Boolean> PLAN_REACH = ParameterSpec.flag("planReach").defaultValue(false)
+            .describe("whether shifts and footholds are planned within each leg's reach (else the weight point and"
+                    + " footholds ahead of the feet's centre)");
+    public static final ParameterSpec<Double> LEAST_LOAD = ParameterSpec.number("leastLoad").unit("N").range(0, 60)
+            .defaultValue(25.0).describe("the least load the shift plans for every foot of the triangle a leg swings over");
+    public static final ParameterSpec<Double> YAW_MARGIN = ParameterSpec.number("yawMargin").unit("rad").range(0, 0.6)
+            .defaultValue(0.1).describe("how far inside its yaw range every hip is planned to stay");
+    public static final ParameterSpec<Double> INWARD = ParameterSpec.number("inward").unit("m").range(0.06, 0.3)
+            .defaultValue(0.1).describe("how far out from its hip every foot is planned to stay at least");
+    public static final ParameterSpec<Double> REACH_MARGIN = ParameterSpec.number("reachMargin").unit("reach")
+            .range(0, 0.9).defaultValue(0.1).describe("the part of a leg's reach ahead a new foothold keeps free");
+    public static final ParameterSpec<Double> LEAD = ParameterSpec.number("lead").unit("stride").range(-0.5, 0.5)
+            .defaultValue(0.125).describe("how far ahead of the feet's centre the body is planned to stand");
     public static final ParameterSpec<Double> TRANSFER = ParameterSpec.number("transfer").unit("s").range(0.05, 2)
             .defaultValue(0.4).describe("how long moving a leg's share of the weight takes");
     public static final ParameterSpec<Double> HOLD = ParameterSpec.number("hold").unit("s").range(0.11, 2)
@@ -119,6 +149,13 @@ public class TransferCrawl extends Relation {
     private double stance;
     private double margin;
     private double proofShare;
+    private LegReach reach;
+    private double reachMargin;
+    private double leastLoad;
+    private boolean planReach;
+    private double lead;
+    private final PlanarConstraints plan = new PlanarConstraints(24);
+    private final int[] tri = new int[3];
     private double transfer;
     private double retreat;
     private int tries;
@@ -187,6 +224,11 @@ public class TransferCrawl extends Relation {
         stance = STANCE.read(p);
         margin = MARGIN.read(p);
         proofShare = PROOF_SHARE.read(p);
+        reach = new LegReach(YAW_MARGIN.read(p), INWARD.read(p));
+        reachMargin = REACH_MARGIN.read(p);
+        leastLoad = LEAST_LOAD.read(p);
+        planReach = PLAN_REACH.read(p);
+        lead = LEAD.read(p);
         transfer = TRANSFER.read(p);
         retreat = RETREAT.read(p);
         tries = TRIES.read(p).intValue();
@@ -259,7 +301,7 @@ public class TransferCrawl extends Relation {
                 }
             }
             case UNLOAD, HOLD -> {
-                if (!overloads(c) || stateTime > MOST_SHIFT_WAIT) {
+                if (!overloads(c) || stateTime > (planReach ? MOST_OVERLOAD_WAIT : MOST_SHIFT_WAIT)) {
                     share = Math.min(1, share + dt / transfer);
                 }
                 if (share >= 1 && state == State.UNLOAD) {
@@ -323,7 +365,7 @@ public class TransferCrawl extends Relation {
             return false;
         }
         for (int k = 0; k < LEGS; k++) {
-            if (k != leg && k != proving && t.element(k) > proven[k]) {
+            if (k != leg && k != proving && t.element(k) > (planReach ? ASKED_OF_PROVEN : 1) * proven[k]) {
                 return true;
             }
         }
@@ -345,7 +387,7 @@ public class TransferCrawl extends Relation {
     /** Chooses the leg of the next step (a slipped foot first, else the next in order) and starts shifting. */
     private void beginStep(RelationContext c) {
         replacing = false;
-        leg = ORDER[next];
+        leg = planReach ? AROUND_ORDER[next] : ORDER[next];
         for (int l = 0; l < LEGS && replaceSlid; l++) {
             if (slipped[l] && l != proving) {
                 leg = l;
@@ -359,7 +401,12 @@ public class TransferCrawl extends Relation {
         to(State.SHIFT);
     }
 
-    /** The foothold of the leg about to swing: where it was set, when re-placed; else ahead of the feet's centre. */
+    /**
+     * The foothold of the leg about to swing: where it was set, when re-placed; else ahead. Unplanned, {@code
+     * stride}·5/8 ahead of the feet's centre; with {@code planReach}, beside the feet's centre as when standing and
+     * half a stride ahead of its hip as the body stands now — no farther than its reach less {@code reachMargin} of
+     * it, so that it stays within reach while the body moves on over it.
+     */
     private void startSwing(int l) {
         double tx;
         double ty;
@@ -368,22 +415,34 @@ public class TransferCrawl extends Relation {
             ty = gy[l];
             slipped[l] = false;
         } else {
-            double cx = 0;
-            double cy = 0;
-            double cos = Math.cos(psi);
-            double sin = Math.sin(psi);
-            for (int k = 0; k < LEGS; k++) {
-                cx += (gx[k] - (cos * homeX[k] - sin * homeY[k])) / LEGS;
-                cy += (gy[k] - (sin * homeX[k] + cos * homeY[k])) / LEGS;
-            }
+            double[] centre = feetCentre();
             double ct = Math.cos(psiTarget);
             double st = Math.sin(psiTarget);
-            double hx = homeX[l] + stride * 5 / 8;
-            tx = cx + ct * hx - st * homeY[l];
-            ty = cy + st * hx + ct * homeY[l];
+            double fx;
+            double across;
+            double fromX;
+            double fromY;
+            if (planReach) {
+                // across: beside the feet's centre; along: from the hip where the body stands now
+                double sideX = centre[0] - bx;
+                double sideY = centre[1] - by;
+                across = -st * sideX + ct * sideY + homeY[l];
+                double ahead = Math.min(stride / 2, (1 - reachMargin) * reach.along(LegReach.outward(l, across)));
+                fx = homeX[l] + ahead;
+                fromX = bx;
+                fromY = by;
+            } else {
+                across = homeY[l];
+                fx = homeX[l] + stride * 5 / 8;
+                fromX = centre[0];
+                fromY = centre[1];
+            }
+            tx = fromX + ct * fx - st * across;
+            ty = fromY + st * fx + ct * across;
         }
         double[] here = footGround(l);
-        path.start(here[0], here[1], gz[l], tx, ty, expectedGround(l), clearance);
+        path.start(here[0], here[1], gz[l], tx, ty, expectedGround(l), planReach ? highestGround(l) : expectedGround(l),
+                clearance);
     }
 
     /** The foot under re-placing goes back {@code retreat} m (unless it has been set back {@code tries} times). */
@@ -471,21 +530,42 @@ public class TransferCrawl extends Relation {
         return there && m >= margin || stateTime > MOST_SHIFT_WAIT && m > 0;
     }
 
-    /** Where the body must stand for the weight to come down inside the triangle without {@code l}: {x, y}. */
+    /**
+     * Where the body must stand before leg {@code l} lifts: {x, y} in the ground frame. Unplanned, where the weight
+     * comes down on the weight point ({@link #weightPoint}); with {@code planReach}, the point nearest where the
+     * body stands best over its feet (their centre, {@code lead} of the stride ahead) at which the weight comes down
+     * inside the triangle of the three feet other than {@code l} by {@code margin}, the foot being proved carries at
+     * least {@code proofShare} of it, every foot stays within its leg's reach ({@link LegReach}), and no other foot
+     * carries more than 0.9 of what it bore when it was proved or what its leg can hold ({@link LegReach#capacity}) —
+     * in that order of precedence, the last given up first when not all can hold ({@link PlanarConstraints}).
+     */
     private double[] shiftTarget(int l) {
+        return planReach ? plannedShift(l) : weightShift(l);
+    }
+
+    /** The body's place that brings the weight down on the weight point ({@link #weightPoint}): {x, y}. */
+    private double[] weightShift(int l) {
         double[] t = weightPoint(l);
-        // the centre of mass stands off the body's centre by the mass model of the legs plus what the soles taught
-        double ox = KeepBalance.comX(sensed.position) + biasX;
-        double oy = KeepBalance.comY(sensed.position) + biasY;
-        double cos = Math.cos(psi);
-        double sin = Math.sin(psi);
-        return new double[] {t[0] - (cos * ox - sin * oy), t[1] - (sin * ox + cos * oy)};
+        double[] o = comOffset();
+        return new double[] {t[0] - o[0], t[1] - o[1]};
     }
 
     /**
-     * Where the weight must come down before leg {@code l} lifts: inside the triangle of the three others, at the
-     * point where the foot being proved carries {@code proofShare} of it and the other two the rest evenly (the
-     * centroid when none is being proved). {x, y} in the ground frame.
+     * How far the centre of mass stands off the body's centre, in the ground frame: {x, y} — by the mass model of
+     * the legs plus what the soles taught.
+     */
+    private double[] comOffset() {
+        double lx = KeepBalance.comX(sensed.position) + biasX;
+        double ly = KeepBalance.comY(sensed.position) + biasY;
+        double cos = Math.cos(psi);
+        double sin = Math.sin(psi);
+        return new double[] {cos * lx - sin * ly, sin * lx + cos * ly};
+    }
+
+    /**
+     * Where the weight must come down before leg {@code l} lifts, unplanned: inside the triangle of the three others,
+     * at the point where the foot being proved carries {@code proofShare} of it and the other two the rest evenly
+     * (the centroid when none is being proved). {x, y} in the ground frame.
      */
     private double[] weightPoint(int l) {
         double tx = 0;
@@ -500,6 +580,89 @@ public class TransferCrawl extends Relation {
             ty += w * gy[k];
         }
         return new double[] {tx, ty};
+    }
+
+    /** The planned shift ({@code planReach}); see {@link #shiftTarget}. */
+    private double[] plannedShift(int l) {
+        double cos = Math.cos(psi);
+        double sin = Math.sin(psi);
+        double[] o = comOffset();
+        double ox = o[0];
+        double oy = o[1];
+        plan.clear();
+        int n = 0;
+        for (int k : AROUND) {
+            if (k != l) {
+                tri[n++] = k;
+            }
+        }
+        boolean weighted = proving >= 0 && proving != l;
+        for (int i = 0; i < 3; i++) {
+            int k = tri[i];
+            int a = tri[(i + 1) % 3];
+            int b = tri[(i + 2) % 3];
+            // the weight's share on foot k, from the line through the other two: at least the margin inside; the
+            // proof share on the foot being proved; at most what k bore when proved or can hold
+            double ex = gx[b] - gx[a];
+            double ey = gy[b] - gy[a];
+            double len = Math.hypot(ex, ey);
+            if (len < 1e-6) {
+                continue;
+            }
+            double nx = -ey / len;
+            double ny = ex / len;
+            double h = nx * (gx[k] - gx[a]) + ny * (gy[k] - gy[a]);
+            if (h < 0) {
+                nx = -nx;
+                ny = -ny;
+                h = -h;
+            }
+            double base = nx * gx[a] + ny * gy[a];
+            // nx·(b + o) ≥ base + least  ⇔  −nx·b ≤ nx·o − base − least
+            plan.add(-nx, -ny, nx * ox + ny * oy - base - Math.max(margin, leastLoad / DistributeForces.WEIGHT * h), 0);
+            if (weighted && k == proving) {
+                plan.add(-nx, -ny, nx * ox + ny * oy - base - proofShare * h, 1);
+            }
+            double most = Math.min(PLANNED_OF_PROVEN * proven[k], capacityAt(k)) / DistributeForces.WEIGHT;
+            if (most < 1 && !(weighted && k == proving)) {
+                plan.add(nx, ny, base + most * h - nx * ox - ny * oy, 3);
+            }
+        }
+        for (int k = 0; k < LEGS; k++) {
+            double[][] w = reach.wedge(k);
+            for (double[] row : w) {
+                // row·Rᵀ(g − b) ≤ c  ⇔  −(R row)·b ≤ c − (R row)·g
+                double ax = cos * row[0] - sin * row[1];
+                double ay = sin * row[0] + cos * row[1];
+                plan.add(-ax, -ay, row[2] - ax * gx[k] - ay * gy[k], 2);
+            }
+        }
+        double[] centre = feetCentre();
+        double[] t = new double[2];
+        plan.nearest(centre[0] + cos * lead * stride, centre[1] + sin * lead * stride, t);
+        return t;
+    }
+
+    /** The load foot {@code k}'s leg can hold where it is commanded to stand now against the body, N. */
+    private double capacityAt(int k) {
+        double cos = Math.cos(psi);
+        double sin = Math.sin(psi);
+        double dx = gx[k] - bx;
+        double dy = gy[k] - by;
+        return LegReach.capacity(k, cos * dx + sin * dy, -sin * dx + cos * dy, gz[k] + lift);
+    }
+
+    /** Where the body's centre stands when the feet stand about it as when standing (their centre): {x, y}. */
+    private double[] feetCentre() {
+        double cx = 0;
+        double cy = 0;
+        double cos = Math.cos(psi);
+        double sin = Math.sin(psi);
+        for (int k = 0; k < LEGS; k++) {
+            cx += (gx[k] - (cos * homeX[k] - sin * homeY[k])) / LEGS;
+            cy += (gy[k] - (sin * homeX[k] + cos * homeY[k])) / LEGS;
+        }
+        return new double[] {cx, cy};
     }
 
     /** Moves the body (while all four feet are down) towards where the shift takes it. */
@@ -621,6 +784,17 @@ public class TransferCrawl extends Relation {
         for (int k = 0; k < LEGS; k++) {
             if (k != l) {
                 s += gz[k] / 3;
+            }
+        }
+        return s;
+    }
+
+    /** The highest of the ground the feet other than {@code l} stand on: a planned swing moves over it. */
+    private double highestGround(int l) {
+        double s = Double.NEGATIVE_INFINITY;
+        for (int k = 0; k < LEGS; k++) {
+            if (k != l) {
+                s = Math.max(s, gz[k]);
             }
         }
         return s;

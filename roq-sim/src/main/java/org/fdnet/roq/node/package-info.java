@@ -6,7 +6,9 @@
  * never on ground truth ({@code body_position}, {@code centre_of_mass}: for measurement and tests only);
  * {@link org.fdnet.roq.node.SensedFeet} turns joint angles, sole forces and attitude into feet and centre of
  * pressure for the closed loops; {@link org.fdnet.roq.node.GaitPhase} and {@link org.fdnet.roq.node.Feet} are the
- * typed views of the gait phase and of the twelve feet numbers.
+ * typed views of the gait phase and of the twelve feet numbers; {@link org.fdnet.roq.node.LegReach} is where a leg
+ * reaches and what it carries, by the model, for a gait that plans within it ({@link
+ * org.fdnet.roq.node.PlanarConstraints}: the nearest point within ranked half-planes).
  *
  * <pre>
  *   simulator snapshot ──SimBridge──▶ RoqSensor Datas (attitude, joint angles, foot forces…)

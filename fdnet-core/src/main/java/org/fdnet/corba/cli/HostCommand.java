@@ -8,6 +8,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import org.fdnet.corba.ClassPolicy;
+import org.fdnet.corba.CpuLatencyHold;
 import org.fdnet.corba.HostHealth;
 import org.fdnet.corba.HostProcess;
 import org.fdnet.corba.HostUnreachableException;
@@ -45,6 +46,13 @@ public final class HostCommand implements Callable<Integer> {
                     + " without it the host records with the logger fdnet run --logger hands over")
     String logger;
 
+    @Option(names = "--hold-cpu-latency",
+            description = "keep every CPU of this machine out of deep idle states while this host runs (a wake-up"
+                    + " latency of 0 through /dev/cpu_dma_latency; needs root): values arriving at an idle host are"
+                    + " handled within microseconds instead of tens of them, at the price of cores that poll instead"
+                    + " of sleeping")
+    boolean holdCpuLatency;
+
     @Option(names = "--link-faults", paramLabel = "FILE", hidden = true,
             description = "soak tests: FILE switches faults in this host's outgoing links on (drop=SHARE,delay=MS)"
                     + " and off (empty or missing) while it runs (see fdnet soak)")
@@ -73,6 +81,15 @@ public final class HostCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("fdnet host " + name + ": --workers " + workers + ": "
                     + e.getMessage());
             return 2;
+        }
+        CpuLatencyHold held = null;
+        if (holdCpuLatency) {
+            try {
+                held = CpuLatencyHold.hold();
+            } catch (IllegalStateException e) {
+                spec.commandLine().getErr().println("fdnet host " + name + ": --hold-cpu-latency: " + e.getMessage());
+                return 1;
+            }
         }
         RuntimeLocalNetwork engine = LocalNetworks.forHost(name, allowedPaths, options);
         try {
@@ -104,6 +121,9 @@ public final class HostCommand implements Callable<Integer> {
             reportHealth(host, engine, healthEvery);
         }
         NamingCommand.awaitStop();
+        if (held != null) {
+            held.close(); // also what keeps the hold reachable until the host stops
+        }
         return 0;
     }
 

@@ -7,6 +7,7 @@ import org.fdnet.tls.TransportSecurity;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.HdrHistogram.Histogram;
+import org.fdnet.corba.CpuLatencyHold;
 import org.fdnet.corba.LinkSettings;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -59,6 +60,10 @@ public final class CorbaBenchmark implements Runnable {
                     + " sender parks; 0 = park at once. bench-b (an fdnet host) keeps the default (default: ${DEFAULT-VALUE})")
     int spinMicros;
 
+    @Option(names = "--hold-cpu-latency", description = "keep every CPU out of deep idle states for the whole run, baseline"
+            + " included (/dev/cpu_dma_latency at 0, as fdnet host --hold-cpu-latency does; needs root)")
+    boolean holdCpuLatency;
+
     @Option(names = "--tls", description = "then measure back to back and sustained again over mutual TLS (throwaway"
             + " keys made with fdnet keys' maker) and print the TLS cost beside the plain figures")
     boolean tls;
@@ -72,11 +77,19 @@ public final class CorbaBenchmark implements Runnable {
             throw new ParameterException(spec.commandLine(),
                     "--samples, --idle-samples and --seconds must be at least 1, --warmup at least 0");
         }
+        try (CpuLatencyHold held = holdCpuLatency ? CpuLatencyHold.hold() : null) {
+            measure();
+        }
+    }
+
+    private void measure() {
         LinkSettings links = new LinkSettings(window, batch, 1 << 20, 200, spinMicros);
         System.out.printf("FDNet bench corba: JacORB 3.9 on 127.0.0.1, Java %s, %d cores; link window %d, batch <= %d,"
                         + " idle watch %d µs on bench-a (bench-b: the default, %d µs)%n",
                 System.getProperty("java.version"), Runtime.getRuntime().availableProcessors(), window, batch,
                 spinMicros, LinkSettings.DEFAULT_SPIN_MICROS);
+        System.out.println("CPU wake-up latency: " + (holdCpuLatency ? "held at 0 µs by this benchmark, baseline included"
+                : "the machine's own (idle CPUs may sleep; --hold-cpu-latency keeps them awake)"));
         System.out.println("starting: naming service (in-process), host bench-b (child JVM), hosts bench-a and "
                 + "bench-probe (in-process) ...");
         Figures plain;

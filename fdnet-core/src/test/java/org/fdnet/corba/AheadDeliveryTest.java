@@ -44,16 +44,20 @@ class AheadDeliveryTest {
     @Test
     void shouldSendLoneValuesAheadAndFreeThemWhenAConfirmationCoversThem() throws Exception {
         RecordingSink sink = probedLink();
-        for (long v = 1; v <= 20; v++) {
+        link.offer(1L);
+        awaitTrue(() -> sink.applied().contains(1L)); // applied before any reply came back
+        assertThat(link.aheadSends()).as("the first value of an idle link goes ahead").isEqualTo(1);
+        assertThat(sink.aheadCalls()).isEqualTo(1);
+        for (long v = 2; v <= 20; v++) {
             link.offer(v);
             long value = v;
-            awaitTrue(() -> sink.applied().contains(value)); // applied before any reply came back
+            awaitTrue(() -> sink.applied().contains(value));
         }
         awaitTrue(() -> link.acknowledged() == 21);
 
         assertThat(sink.applied()).containsExactlyElementsOf(LongStream.rangeClosed(0, 20).boxed().toList());
-        // a value offered while a confirmation is in flight goes through a sender thread
-        assertThat(link.aheadSends()).isGreaterThanOrEqualTo(15);
+        // a value offered while a confirmation is in flight goes through a sender thread: how many do depends on
+        // how slowly this loop runs against the confirmations' 20 ms clock
         assertThat(sink.aheadCalls()).isEqualTo((int) link.aheadSends());
         assertThat(sink.twoWayCalls()).as("the probe, then confirmations only").isBetween(2, 21);
         assertThat(link.pending()).isZero();

@@ -284,6 +284,7 @@ public final class GraphCanvas extends JComponent implements SceneListener {
                 scene.select(Set.of(pressedOn));
             }
             pressedOn = null;
+            scene.endMove();
             boolean clickedRight = panning && pressScreen != null && e.getPoint().distance(pressScreen) < 4
                     && SwingUtilities.isRightMouseButton(e);
             rubberBand = null;

@@ -296,6 +296,13 @@ public final class GraphScene {
         notifyScene();
     }
 
+    /** The selected nodes stopped moving (the drag is over): everything is drawn whole again. */
+    public void endMove() {
+        if (revision != stillRevision) {
+            fireScene();
+        }
+    }
+
     /** Counts every change to what is drawn. */
     public long revision() {
         return revision;

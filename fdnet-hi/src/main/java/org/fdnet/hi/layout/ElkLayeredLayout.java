@@ -45,8 +45,7 @@ public final class ElkLayeredLayout {
 
     /** Top-left corners, by node, for nodes of the given sizes. */
     public static Map<NodeRef, Point2D> positions(NetworkInfo network, Function<NodeRef, NodeSize> sizes) {
-        int nodes = network.modules().stream().mapToInt(m -> m.nodes().size()).sum();
-        if (nodes >= BY_MODULE_FROM && network.modules().size() > 1) {
+        if (byModule(network)) {
             return ModuleBlockLayout.positions(network, sizes);
         }
         List<NodeRef> all = network.modules().stream().flatMap(m -> nodesOf(m).stream()).toList();
@@ -54,6 +53,16 @@ public final class ElkLayeredLayout {
         layOut(all, allConnections(network), sizes, 1).forEach((ref, node) ->
                 result.put(ref, new Point2D.Double(node.getX() + 20, node.getY() + 20)));
         return result;
+    }
+
+    /** Whether {@link #positions} lays {@code network} out module by module (else as one graph). */
+    public static boolean byModule(NetworkInfo network) {
+        return nodeCount(network) >= BY_MODULE_FROM && network.modules().size() > 1;
+    }
+
+    /** Every node of every module. */
+    public static int nodeCount(NetworkInfo network) {
+        return network.modules().stream().mapToInt(m -> m.nodes().size()).sum();
     }
 
     /**

@@ -79,9 +79,9 @@ class DragBackdropTest {
         return image;
     }
 
-    /** The selection set again: a change that is not a move, so the next frame repaints everything. */
+    /** The drag ends, so the next frame repaints everything. */
     private BufferedImage wholeRepaint() {
-        scene.select(Set.copyOf(scene.selection()));
+        scene.endMove();
         return frame();
     }
 

@@ -109,8 +109,8 @@ public final class BenchHiCommand implements Callable<Integer> {
 
     /** How the editor lays this network out (see ElkLayeredLayout). */
     private static String layoutMode(NetworkInfo network) {
-        int nodes = network.modules().stream().mapToInt(m -> m.nodes().size()).sum();
-        return nodes >= ElkLayeredLayout.BY_MODULE_FROM && network.modules().size() > 1
+        int nodes = ElkLayeredLayout.nodeCount(network);
+        return ElkLayeredLayout.byModule(network)
                 ? String.format("module by module (%,d nodes, at least %,d)", nodes, ElkLayeredLayout.BY_MODULE_FROM)
                 : String.format("one graph (%,d nodes, under %,d)", nodes, ElkLayeredLayout.BY_MODULE_FROM);
     }
